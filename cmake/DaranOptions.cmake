@@ -1,0 +1,28 @@
+# Build options shared by every preset, and the strict warning set of the core.
+include_guard(GLOBAL)
+
+if(CMAKE_SOURCE_DIR STREQUAL PROJECT_SOURCE_DIR)
+  set(_daran_top_level ON)
+else()
+  set(_daran_top_level OFF)
+endif()
+
+option(DARAN_BUILD_TESTS "Build the unit and transcript tests" ${_daran_top_level})
+option(DARAN_BUILD_SIM "Build the simulated drive (host only)" ${_daran_top_level})
+option(DARAN_BUILD_DEMO "Build the example programs" ${_daran_top_level})
+option(DARAN_SANITIZE "Build everything with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
+set(DARAN_CONFIG_HEADER "" CACHE STRING "A user options header included by daran_config.h")
+
+if(DARAN_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+# The warnings the core must build clean under, as errors (gcc, clang, arm-none-eabi-gcc).
+set(DARAN_STRICT_WARNINGS
+    -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wstrict-prototypes
+    -Wmissing-prototypes -Wcast-qual -Wundef -Werror)
+
+function(daran_strict_warnings target)
+  target_compile_options(${target} PRIVATE ${DARAN_STRICT_WARNINGS})
+endfunction()

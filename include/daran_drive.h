@@ -1,0 +1,113 @@
+/** @file daran_drive.h
+ * A drive instance: bytes in, replies and HAL calls out.
+ *
+ * The caller owns the daran_drive_t (static, on the stack or in a struct of
+ * its own); the library allocates nothing and keeps no global state, so any
+ * number of instances can live in one program.
+ *
+ * Threading: daran_rx_byte() / daran_rx_write() are the producer side and may
+ * run in an interrupt; daran_poll() is the consumer side and runs in the main
+ * loop. One producer and one consumer per instance; no locks are needed.
+ * daran_process_line() belongs to the consumer side. */
+#ifndef DARAN_DRIVE_H
+#define DARAN_DRIVE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "daran_config.h"
+#include "daran_hal.h"
+#include "daran_result.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Receives one whole reply line (line end included; never NUL-terminated).
+ * Called from daran_poll() / daran_process_line(). */
+typedef void (*daran_write_fn)(void *ctx, const char *line, size_t len);
+
+/** Receives a line the drive does not execute alone: a line addressed to
+ * another motor id, or a broadcast (id 0) line that is not a read. The line is
+ * as received, checksum field included, without its line end. */
+typedef void (*daran_forward_fn)(void *ctx, uint8_t motor_id, const char *line,
+                                 size_t len);
+
+/** @cond INTERNAL  The members below are the library's; read none of them. */
+typedef struct daran_rx_ring {
+    volatile uint16_t head;                      /* written by the producer only */
+    volatile uint16_t tail;                      /* written by the consumer only */
+    uint8_t bytes[DARAN_RX_RING_SIZE];
+    uint8_t damaged[DARAN_RX_RING_SIZE / 8u];    /* '\n' that ends a line that lost bytes */
+    uint8_t producer_dropping;                   /* producer only */
+    volatile uint32_t dropped;                   /* bytes lost, producer only */
+} daran_rx_ring_t;
+/** @endcond */
+
+/** One drive. Size: sizeof(daran_drive_t), known at compile time. */
+typedef struct daran_drive {
+    /** @cond INTERNAL */
+    const daran_hal_t *hal;
+    void *hal_ctx;
+    daran_write_fn write;
+    void *write_ctx;
+    daran_forward_fn forward;
+    void *forward_ctx;
+    daran_rx_ring_t rx;
+    uint16_t line_len;
+    uint8_t line_flags;
+    uint8_t reply_checksum;  /* the current request carried a checksum field */
+    uint8_t has_preset;
+    float preset[3];
+    char line[DARAN_LINE_MAX];
+    char reply[DARAN_REPLY_MAX];
+    /** @endcond */
+} daran_drive_t;
+
+/** Bind an instance to its HAL and reply sink and reset it (empty receive
+ * ring, no partial line, no preset). @p hal must stay valid while the instance
+ * is used; every member of it must be set.
+ * O(sizeof *drive). Returns DARAN_ERR_BAD_ARGUMENT if a pointer or HAL member
+ * is NULL (the instance is then unusable). */
+DARAN_NODISCARD daran_result_t daran_init(daran_drive_t *drive, const daran_hal_t *hal,
+                                          void *hal_ctx, daran_write_fn write,
+                                          void *write_ctx);
+
+/** Register (or, with NULL, remove) the forward hook of a CAN gateway.
+ * O(1), cannot fail. */
+void daran_set_forward(daran_drive_t *drive, daran_forward_fn forward, void *ctx);
+
+/** Producer side: queue one received byte. Safe in an interrupt (one producer).
+ * O(1). Returns false when the ring was full: the byte is lost, the line it
+ * belonged to will be discarded and answered `line too long`. */
+bool daran_rx_byte(daran_drive_t *drive, uint8_t byte);
+
+/** Producer side: queue @p len bytes; returns how many were queued (the rest
+ * are lost as in daran_rx_byte()). O(len). */
+size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len);
+
+/** Bytes lost to a full ring since daran_init() (wraps at 2^32). O(1). */
+uint32_t daran_rx_dropped(const daran_drive_t *drive);
+
+/** Consumer side: frame the queued bytes and process every complete line,
+ * replying through the write callback. Returns the number of lines processed
+ * (blank lines included). O(bytes queued); never blocks. */
+size_t daran_poll(daran_drive_t *drive);
+
+/** Process one line the caller framed itself (without its '\n'; a trailing
+ * '\r' is whitespace). Length and characters are checked as on the byte path.
+ * All-or-nothing: a line that is answered with an error made no HAL setter,
+ * move or action call. Returns DARAN_OK when the line was executed, ignored
+ * (blank) or not addressed to this drive, otherwise the error that was
+ * answered. O(len). */
+daran_result_t daran_process_line(daran_drive_t *drive, const char *line, size_t len);
+
+/** The library version, "MAJOR.MINOR.PATCH". */
+const char *daran_version(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DARAN_DRIVE_H */

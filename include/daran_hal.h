@@ -1,0 +1,125 @@
+/** @file daran_hal.h
+ * The hardware layer (HAL): what a port gives the protocol core.
+ *
+ * The core never touches hardware. It validates a whole line first, then
+ * makes at most one HAL setter, move or action call for it (plus a watchdog
+ * feed after an accepted motion command). Getters may be called while a
+ * line is validated (the drive's id, state and error flags, the position
+ * setpoint for relative moves); they must have no side effects.
+ *
+ * Every function returns DARAN_OK or the protocol error the drive should
+ * answer with (DARAN_ERR_MOTOR_FAULT for a hardware failure). A function that
+ * returns an error must leave the drive unchanged. All are called from the
+ * thread that calls daran_poll() / daran_process_line(), never from the
+ * byte-input interrupt. */
+#ifndef DARAN_HAL_H
+#define DARAN_HAL_H
+
+#include <stdint.h>
+
+#include "daran_properties.h"
+#include "daran_result.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Axis states of `requested_state` / `current_state`. */
+#define DARAN_STATE_IDLE 1u
+#define DARAN_STATE_CLOSED_LOOP 8u
+
+/** Bits of `axis0.error`, reported by `e`. Every bit except
+ * DARAN_FLAG_NVM_CORRUPT blocks motion until `sc`; bits a port defines
+ * beyond these block motion too and are shown by number only. */
+#define DARAN_FLAG_ESTOP          (1u << 0) /**< `st` was received */
+#define DARAN_FLAG_WATCHDOG       (1u << 1) /**< watchdog not fed in time */
+#define DARAN_FLAG_MOTOR_OVERTEMP (1u << 2) /**< motor thermistor tripped */
+#define DARAN_FLAG_FET_OVERTEMP   (1u << 3) /**< FET thermistor tripped */
+#define DARAN_FLAG_UNDERVOLTAGE   (1u << 4) /**< bus voltage below trip level */
+#define DARAN_FLAG_NVM_CORRUPT    (1u << 5) /**< stored config was damaged; defaults loaded (warning) */
+#define DARAN_FLAG_WARNING_MASK   DARAN_FLAG_NVM_CORRUPT
+
+/** A property value; the property's type says which member is meant
+ * (DARAN_TYPE_BOOL uses u32, 0 or 1). */
+typedef union daran_value {
+    float f32;
+    uint32_t u32;
+    uint64_t u64;
+} daran_value_t;
+
+/** The control modes a motion command selects. */
+typedef enum daran_move_kind {
+    DARAN_MOVE_FILTERED_POSITION, /**< `t`, `mt`: input filter toward pos_deg */
+    DARAN_MOVE_TRAPEZOID,         /**< `q`, `mq`: trapezoidal move to pos_deg */
+    DARAN_MOVE_PASSTHROUGH,       /**< `p`, `mp`: pos_deg with vel/torque feed-forward */
+    DARAN_MOVE_VELOCITY,          /**< `v`/`mv` mode 1: vel_rpm at once, torque_nm feed-forward */
+    DARAN_MOVE_VELOCITY_RAMP,     /**< `v`/`mv` mode 2: ramp to vel_rpm at rate */
+    DARAN_MOVE_TORQUE,            /**< `c`/`mc` mode 1: torque_nm at once */
+    DARAN_MOVE_TORQUE_RAMP,       /**< `c`/`mc` mode 6 (or 2): ramp to torque_nm at rate */
+    DARAN_MOVE_IMPEDANCE          /**< `d`: torque = kp(pos_deg-pos) + torque_nm + kd(vel_rpm-vel) */
+} daran_move_kind_t;
+
+/** daran_move_t.given: which optional values the line carried. */
+#define DARAN_GIVEN_VEL  (1u << 0) /**< vel_rpm was given (TRAPEZOID) */
+#define DARAN_GIVEN_RATE (1u << 1) /**< rate was given (FILTERED_POSITION, TRAPEZOID) */
+
+/** One validated motion command, in protocol units (output shaft).
+ *
+ * | kind              | pos_deg | vel_rpm       | torque_nm  | rate                       |
+ * |-------------------|---------|---------------|------------|----------------------------|
+ * | FILTERED_POSITION | target  | -             | -          | filter bandwidth 1/s > 0 (*)|
+ * | TRAPEZOID         | target  | cruise > 0 (*)| -          | accel = decel (r/min)/s >0 (*)|
+ * | PASSTHROUGH       | target  | feed-forward  | feed-fwd   | -                          |
+ * | VELOCITY          | -       | target        | feed-fwd   | -                          |
+ * | VELOCITY_RAMP     | -       | target        | -          | ramp (r/min)/s > 0         |
+ * | TORQUE            | -       | -             | target     | -                          |
+ * | TORQUE_RAMP       | -       | -             | target     | ramp Nm/s > 0              |
+ * | IMPEDANCE         | pdes    | vdes          | tff        | -  (kp, kd >= 0)           |
+ *
+ * (*) only when the matching DARAN_GIVEN_ bit is set; otherwise the drive
+ * keeps its current setting. A given filter bandwidth also becomes
+ * `input_filter_bandwidth`, a velocity ramp `vel_ramp_rate`, a torque ramp
+ * `torque_ramp_rate`. The HAL also stores the targets in the
+ * `output_shaft.input_*` properties (see docs/porting.md). Unused members
+ * are 0. */
+typedef struct daran_move {
+    daran_move_kind_t kind;
+    uint8_t given;
+    float pos_deg;
+    float vel_rpm;
+    float torque_nm;
+    float rate;
+    float kp;
+    float kd;
+} daran_move_t;
+
+/** Actions without values. */
+typedef enum daran_action {
+    DARAN_ACTION_SAVE_CONFIG,   /**< `ss`: write the config to non-volatile memory */
+    DARAN_ACTION_ERASE_CONFIG,  /**< `se`: erase it; defaults load at next boot */
+    DARAN_ACTION_REBOOT,        /**< `sr`: reboot */
+    DARAN_ACTION_CLEAR_ERRORS,  /**< `sc`: clear the error flags (state stays idle) */
+    DARAN_ACTION_SET_ZERO,      /**< `sz`: current position becomes 0, setpoints shift with it */
+    DARAN_ACTION_ESTOP,         /**< `st`: go idle with DARAN_FLAG_ESTOP */
+    DARAN_ACTION_FEED_WATCHDOG  /**< `u`, and after every accepted motion command */
+} daran_action_t;
+
+/** The port's functions. All four are required. */
+typedef struct daran_hal {
+    /** Read a property. Must have no side effects. */
+    daran_result_t (*get)(void *ctx, daran_prop_t prop, daran_value_t *out);
+    /** Write a property the core has range-checked. Read-only properties
+     * never reach it. */
+    daran_result_t (*set)(void *ctx, daran_prop_t prop, daran_value_t value);
+    /** Start a validated motion command. The core has already checked the
+     * drive's state (closed loop, no blocking flag). */
+    daran_result_t (*move)(void *ctx, const daran_move_t *move);
+    /** Carry out an action. */
+    daran_result_t (*action)(void *ctx, daran_action_t action);
+} daran_hal_t;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DARAN_HAL_H */

@@ -1,0 +1,55 @@
+/* The one return convention of the daran-ascii API.
+ *
+ * Every function that can fail returns daran_result_t: DARAN_OK (0) is
+ * success; every other value names one error reply of the protocol (its
+ * phrase is daran_result_phrase()), except DARAN_ERR_BAD_ARGUMENT, which
+ * reports misuse of the API itself and is never sent on the link.
+ * HAL functions return the same type: a HAL that refuses a request returns the
+ * protocol error the drive should answer with. */
+#ifndef DARAN_RESULT_H
+#define DARAN_RESULT_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define DARAN_NODISCARD __attribute__((warn_unused_result))
+#else
+#define DARAN_NODISCARD
+#endif
+
+typedef enum daran_result {
+    DARAN_OK = 0,
+    DARAN_ERR_UNKNOWN_COMMAND,       /* "unknown command" */
+    DARAN_ERR_INVALID_FORMAT,        /* "invalid command format" */
+    DARAN_ERR_INVALID_MOTOR,         /* "invalid motor" */
+    DARAN_ERR_INVALID_VALUE,         /* "invalid value" */
+    DARAN_ERR_OUT_OF_RANGE,          /* "value out of range" */
+    DARAN_ERR_INVALID_MODE,          /* "invalid mode" */
+    DARAN_ERR_INVALID_PROPERTY,      /* "invalid property" */
+    DARAN_ERR_READ_ONLY,             /* "read only property" */
+    DARAN_ERR_INVALID_CHECKSUM,      /* "invalid checksum" */
+    DARAN_ERR_CHECKSUM_MISMATCH,     /* "checksum mismatch" */
+    DARAN_ERR_LINE_TOO_LONG,         /* "line too long" */
+    DARAN_ERR_INVALID_CHARACTER,     /* "invalid character" */
+    DARAN_ERR_NO_PRESET,             /* "no preset" */
+    DARAN_ERR_TRAJECTORY_INFEASIBLE, /* "trajectory infeasible" */
+    DARAN_ERR_ESTOP_ACTIVE,          /* "estop active" */
+    DARAN_ERR_MOTOR_FAULT,           /* "motor fault" */
+    DARAN_ERR_MOTOR_IDLE,            /* "motor idle" */
+    DARAN_ERR_BAD_ARGUMENT,          /* API misuse; never sent on the link */
+    DARAN_RESULT_COUNT
+} daran_result_t;
+
+/* The error phrase of a result ("unknown command"), without "error: ".
+ * DARAN_OK gives "ok"; a value outside the enum gives "motor fault", the
+ * phrase the core answers when a HAL returns something it does not know.
+ * O(1), touches nothing, cannot fail. */
+const char *daran_result_phrase(daran_result_t result);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DARAN_RESULT_H */
