@@ -1,0 +1,522 @@
+/* The recording mock HAL, reply sink and check helpers of the unit tests
+ * (see mock_hal.h). */
+#include "mock_hal.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static mock_t mock_instances[MOCK_INSTANCES];
+
+static void mock_defaults(mock_t *m, uint32_t id)
+{
+    daran_value_t *p = m->props;
+    p[DARAN_PROP_CAN_NODE_ID].u32 = id;
+    p[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
+    p[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
+    p[DARAN_PROP_AXIS_ERROR].u32 = 0;
+    p[DARAN_PROP_VBUS_VOLTAGE].f32 = 24.0f;
+    p[DARAN_PROP_IBUS].f32 = 0.25f;
+    p[DARAN_PROP_UART_BAUDRATE].u32 = 115200;
+    p[DARAN_PROP_CAN_BAUD_RATE].u32 = 1000000;
+    p[DARAN_PROP_FW_VERSION].u32 = 10203;
+    p[DARAN_PROP_HW_VERSION].u32 = 7;
+    p[DARAN_PROP_SERIAL_NUMBER].u64 = 1234567890123ull;
+    p[DARAN_PROP_TRAJECTORY_DONE].u32 = 1;
+    p[DARAN_PROP_POS_GAIN].f32 = 20.0f;
+    p[DARAN_PROP_VEL_GAIN].f32 = 0.16f;
+    p[DARAN_PROP_VEL_INTEGRATOR_GAIN].f32 = 0.32f;
+    p[DARAN_PROP_CONTROLLER_VEL_LIMIT].f32 = 10.0f;
+    p[DARAN_PROP_INPUT_FILTER_BANDWIDTH].f32 = 20.0f;
+    p[DARAN_PROP_CURRENT_LIM].f32 = 10.0f;
+    p[DARAN_PROP_MOTOR_TORQUE_LIM].f32 = 5.0f;
+    p[DARAN_PROP_CURRENT_CONTROL_BANDWIDTH].f32 = 1000.0f;
+    p[DARAN_PROP_FET_TEMPERATURE].f32 = 30.0f;
+    p[DARAN_PROP_MOTOR_TEMPERATURE].f32 = 31.0f;
+    p[DARAN_PROP_FET_TEMP_LIMIT_LOWER].f32 = 80.0f;
+    p[DARAN_PROP_FET_TEMP_LIMIT_UPPER].f32 = 100.0f;
+    p[DARAN_PROP_MOTOR_TEMP_LIMIT_LOWER].f32 = 80.0f;
+    p[DARAN_PROP_MOTOR_TEMP_LIMIT_UPPER].f32 = 100.0f;
+    p[DARAN_PROP_SHAFT_VEL_LIMIT].f32 = 600.0f;
+    p[DARAN_PROP_SHAFT_TORQUE_LIM].f32 = 5.0f;
+    p[DARAN_PROP_VEL_RAMP_RATE].f32 = 60.0f;
+    p[DARAN_PROP_TORQUE_RAMP_RATE].f32 = 1.0f;
+    p[DARAN_PROP_STEPS_PER_TURN].f32 = 360.0f;
+    p[DARAN_PROP_TORQUE_CONSTANT].f32 = 0.1f;
+    p[DARAN_PROP_WATCHDOG_TIMEOUT].f32 = 1.0f;
+}
+
+mock_t *mock_new_slot(int slot, uint32_t id)
+{
+    mock_t *m = &mock_instances[slot];
+    memset(m, 0, sizeof *m);
+    m->react = true;
+    m->fail_prop = -1;
+    mock_defaults(m, id);
+    daran_result_t r = daran_init(&m->drive, &mock_hal_fns, m, mock_write, m);
+    assert_int_equal(r, DARAN_OK);
+    return m;
+}
+
+mock_t *mock_new(void) { return mock_new_slot(0, 1); }
+mock_t *mock_new_id(uint32_t id) { return mock_new_slot(0, id); }
+
+void mock_enable_forward(mock_t *m) { daran_set_forward(&m->drive, mock_forward, m); }
+
+void mock_clear(mock_t *m)
+{
+    memset(m->calls, 0, sizeof m->calls);
+    m->n_calls = 0;
+    m->n_gets = 0;
+    m->out_len = 0;
+    m->out[0] = '\0';
+    m->n_writes = 0;
+    m->n_fwd = 0;
+}
+
+/* ---- fault injection ---- */
+
+void mock_fail(mock_t *m, unsigned mask, unsigned nth, daran_result_t result, int prop)
+{
+    m->fail_mask = mask;
+    m->fail_countdown = nth;
+    m->fail_result = result;
+    m->fail_prop = prop;
+}
+
+static bool mock_should_fail(mock_t *m, unsigned kind, int prop)
+{
+    if (m->fail_countdown == 0 || (m->fail_mask & kind) == 0)
+        return false;
+    if (m->fail_prop >= 0 && m->fail_prop != prop)
+        return false;
+    if (--m->fail_countdown != 0)
+        return false;
+    return true;
+}
+
+static mock_call_t *mock_log(mock_t *m, mock_call_kind_t kind)
+{
+    assert_true(m->n_calls < MOCK_CALLS_MAX);
+    mock_call_t *c = &m->calls[m->n_calls++];
+    memset(c, 0, sizeof *c);
+    c->kind = kind;
+    return c;
+}
+
+/* ---- the HAL ---- */
+
+static daran_result_t mock_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+{
+    mock_t *m = ctx;
+    assert_true((int)prop >= 0 && prop < DARAN_PROP_COUNT);
+    assert_non_null(out);
+    m->n_gets++;
+    if (mock_should_fail(m, MOCK_FAIL_GET, (int)prop))
+        return m->fail_result;
+    *out = m->props[prop];
+    return DARAN_OK;
+}
+
+static daran_result_t mock_set(void *ctx, daran_prop_t prop, daran_value_t value)
+{
+    mock_t *m = ctx;
+    assert_true((int)prop >= 0 && prop < DARAN_PROP_COUNT);
+    mock_call_t *c = mock_log(m, MOCK_CALL_SET);
+    c->prop = prop;
+    c->value = value;
+    if (mock_should_fail(m, MOCK_FAIL_SET, (int)prop)) {
+        c->result = m->fail_result;
+        return m->fail_result;
+    }
+    m->props[prop] = value;
+    if (m->react) {
+        daran_value_t *p = m->props;
+        switch (prop) {
+        case DARAN_PROP_REQUESTED_STATE: p[DARAN_PROP_CURRENT_STATE] = value; break;
+        case DARAN_PROP_POS_SETPOINT: p[DARAN_PROP_INPUT_POS] = value; break;
+        case DARAN_PROP_VEL_SETPOINT: p[DARAN_PROP_INPUT_VEL] = value; break;
+        case DARAN_PROP_TORQUE_SETPOINT: p[DARAN_PROP_INPUT_TORQUE] = value; break;
+        default: break;
+        }
+    }
+    return DARAN_OK;
+}
+
+static daran_result_t mock_move(void *ctx, const daran_move_t *mv)
+{
+    mock_t *m = ctx;
+    assert_non_null(mv);
+    mock_call_t *c = mock_log(m, MOCK_CALL_MOVE);
+    c->move = *mv;
+    if (mock_should_fail(m, MOCK_FAIL_MOVE, -1)) {
+        c->result = m->fail_result;
+        return m->fail_result;
+    }
+    if (!m->react)
+        return DARAN_OK;
+    daran_value_t *p = m->props;
+    switch (mv->kind) {
+    case DARAN_MOVE_FILTERED_POSITION:
+        if (mv->given & DARAN_GIVEN_RATE)
+            p[DARAN_PROP_INPUT_FILTER_BANDWIDTH].f32 = mv->rate;
+        p[DARAN_PROP_INPUT_POS].f32 = mv->pos_deg;
+        p[DARAN_PROP_POS_SETPOINT].f32 = mv->pos_deg;
+        break;
+    case DARAN_MOVE_TRAPEZOID:
+        /* The mock "arrives" at once so relative starts are predictable. */
+        p[DARAN_PROP_INPUT_POS].f32 = mv->pos_deg;
+        p[DARAN_PROP_POS_SETPOINT].f32 = mv->pos_deg;
+        break;
+    case DARAN_MOVE_PASSTHROUGH:
+        p[DARAN_PROP_INPUT_POS].f32 = mv->pos_deg;
+        p[DARAN_PROP_POS_SETPOINT].f32 = mv->pos_deg;
+        p[DARAN_PROP_INPUT_VEL].f32 = mv->vel_rpm;
+        p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm;
+        break;
+    case DARAN_MOVE_VELOCITY:
+        p[DARAN_PROP_INPUT_VEL].f32 = mv->vel_rpm;
+        p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm;
+        break;
+    case DARAN_MOVE_VELOCITY_RAMP:
+        p[DARAN_PROP_INPUT_VEL].f32 = mv->vel_rpm;
+        p[DARAN_PROP_VEL_RAMP_RATE].f32 = mv->rate;
+        break;
+    case DARAN_MOVE_TORQUE: p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm; break;
+    case DARAN_MOVE_TORQUE_RAMP:
+        p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm;
+        p[DARAN_PROP_TORQUE_RAMP_RATE].f32 = mv->rate;
+        break;
+    case DARAN_MOVE_IMPEDANCE:
+        p[DARAN_PROP_INPUT_POS].f32 = mv->pos_deg;
+        p[DARAN_PROP_INPUT_VEL].f32 = mv->vel_rpm;
+        p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm;
+        break;
+    default: fail_msg("move kind %d outside the enum", (int)mv->kind);
+    }
+    return DARAN_OK;
+}
+
+static daran_result_t mock_action(void *ctx, daran_action_t action)
+{
+    mock_t *m = ctx;
+    mock_call_t *c = mock_log(m, MOCK_CALL_ACTION);
+    c->action = action;
+    if (mock_should_fail(m, MOCK_FAIL_ACTION, -1)) {
+        c->result = m->fail_result;
+        return m->fail_result;
+    }
+    if (!m->react)
+        return DARAN_OK;
+    daran_value_t *p = m->props;
+    switch (action) {
+    case DARAN_ACTION_ESTOP:
+        p[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_IDLE;
+        p[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_IDLE;
+        p[DARAN_PROP_AXIS_ERROR].u32 |= DARAN_FLAG_ESTOP;
+        break;
+    case DARAN_ACTION_CLEAR_ERRORS: p[DARAN_PROP_AXIS_ERROR].u32 = 0; break;
+    case DARAN_ACTION_REBOOT:
+        p[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
+        p[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
+        p[DARAN_PROP_AXIS_ERROR].u32 = 0;
+        break;
+    case DARAN_ACTION_SET_ZERO: {
+        float shift = p[DARAN_PROP_POS_ESTIMATE].f32;
+        p[DARAN_PROP_POS_ESTIMATE].f32 -= shift;
+        p[DARAN_PROP_POS_SETPOINT].f32 -= shift;
+        p[DARAN_PROP_INPUT_POS].f32 -= shift;
+        break;
+    }
+    case DARAN_ACTION_SAVE_CONFIG:
+    case DARAN_ACTION_ERASE_CONFIG:
+    case DARAN_ACTION_FEED_WATCHDOG: break;
+    default: fail_msg("action %d outside the enum", (int)action);
+    }
+    return DARAN_OK;
+}
+
+const daran_hal_t mock_hal_fns = {mock_get, mock_set, mock_move, mock_action};
+
+void mock_write(void *ctx, const char *line, size_t len)
+{
+    mock_t *m = ctx;
+    assert_non_null(line);
+    /* Whole lines only, each ending in the configured line end, bounded. */
+    assert_true(len >= 1 && len <= DARAN_REPLY_MAX);
+    assert_int_equal(line[len - 1], '\n');
+#if DARAN_REPLY_CRLF
+    assert_true(len >= 2 && line[len - 2] == '\r');
+#endif
+    assert_null(memchr(line, '\n', len - 1));
+    assert_true(m->out_len + len <= MOCK_OUT_MAX);
+    memcpy(m->out + m->out_len, line, len);
+    m->out_len += len;
+    m->out[m->out_len] = '\0';
+    m->n_writes++;
+}
+
+void mock_forward(void *ctx, uint8_t id, const char *line, size_t len)
+{
+    mock_t *m = ctx;
+    assert_true(m->n_fwd < MOCK_FWD_MAX);
+    assert_true(len < sizeof m->fwd[0].line);
+    mock_forward_t *f = &m->fwd[m->n_fwd++];
+    f->id = id;
+    f->len = len;
+    memcpy(f->line, line, len);
+    f->line[len] = '\0';
+}
+
+/* ---- sending ---- */
+
+static void mock_remember(mock_t *m, const void *data, size_t len)
+{
+    size_t n = len < sizeof m->last - 1 ? len : sizeof m->last - 1;
+    memcpy(m->last, data, n);
+    m->last[n] = '\0';
+}
+
+void mock_send_bytes(mock_t *m, const void *data, size_t len, size_t chunk)
+{
+    const uint8_t *b = data;
+    if (chunk == 0)
+        chunk = 32;
+    mock_remember(m, data, len);
+    while (len > 0) {
+        size_t n = len < chunk ? len : chunk;
+        size_t queued = daran_rx_write(&m->drive, b, n);
+        assert_int_equal(queued, n);
+        (void)daran_poll(&m->drive);
+        b += n;
+        len -= n;
+    }
+}
+
+void mock_send_raw(mock_t *m, const char *text) { mock_send_bytes(m, text, strlen(text), 0); }
+
+void mock_send_line(mock_t *m, const char *line)
+{
+    char buf[DARAN_LINE_MAX * 4 + 8];
+    size_t n = strlen(line);
+    assert_true(n + 1 < sizeof buf);
+    memcpy(buf, line, n);
+    buf[n] = '\n';
+    mock_clear(m);
+    mock_send_bytes(m, buf, n + 1, 0);
+    mock_remember(m, line, n);
+}
+
+/* ---- counting and checksums ---- */
+
+size_t mock_count(const mock_t *m, mock_call_kind_t kind)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < m->n_calls; i++)
+        n += m->calls[i].kind == kind;
+    return n;
+}
+
+size_t mock_count_action(const mock_t *m, daran_action_t action)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < m->n_calls; i++)
+        n += m->calls[i].kind == MOCK_CALL_ACTION && m->calls[i].action == action;
+    return n;
+}
+
+unsigned mock_xor(const char *s)
+{
+    unsigned x = 0;
+    while (*s)
+        x ^= (unsigned char)*s++;
+    return x;
+}
+
+char *mock_with_checksum(char *buf, size_t size, const char *payload)
+{
+    char tmp[512];
+    snprintf(tmp, sizeof tmp, "%s ", payload);
+    snprintf(buf, size, "%s*%u", tmp, mock_xor(tmp));
+    return buf;
+}
+
+char *mock_reply_line(char *buf, size_t size, const char *payload, bool checksum)
+{
+    const char *end = DARAN_REPLY_CRLF ? "\r\n" : "\n";
+    if (checksum) {
+        char tmp[512];
+        mock_with_checksum(tmp, sizeof tmp, payload);
+        snprintf(buf, size, "%s%s", tmp, end);
+    } else {
+        snprintf(buf, size, "%s%s", payload, end);
+    }
+    return buf;
+}
+
+const char *mock_escape(const char *s, size_t len)
+{
+    static char slots[2][2048];
+    static int turn;
+    char *o = slots[turn];
+    turn ^= 1;
+    size_t k = 0;
+    for (size_t i = 0; i < len && k + 5 < sizeof slots[0]; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if (c == '\n') { o[k++] = '\\'; o[k++] = 'n'; }
+        else if (c == '\r') { o[k++] = '\\'; o[k++] = 'r'; }
+        else if (c == '\t') { o[k++] = '\\'; o[k++] = 't'; }
+        else if (c < 0x20 || c >= 0x7f) k += (size_t)sprintf(o + k, "\\x%02X", c);
+        else o[k++] = (char)c;
+    }
+    o[k] = '\0';
+    return o;
+}
+
+/* ---- checks ---- */
+
+void mock_check(bool ok, const mock_t *m, const char *file, int line, const char *fmt, ...)
+{
+    if (ok)
+        return;
+    char msg[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    print_error("%s\n  line sent: \"%s\"\n  replies:   \"%s\"\n", msg,
+                mock_escape(m->last, strlen(m->last)), mock_escape(m->out, m->out_len));
+    _fail(file, line);
+}
+
+void mock_assert_reply(mock_t *m, const char *expected, const char *file, int line)
+{
+    mock_check(strcmp(m->out, expected) == 0, m, file, line, "expected reply \"%s\"",
+               mock_escape(expected, strlen(expected)));
+    m->out_len = 0;
+    m->out[0] = '\0';
+}
+
+static const char *mock_call_name(const mock_call_t *c)
+{
+    static char buf[96];
+    switch (c->kind) {
+    case MOCK_CALL_SET: snprintf(buf, sizeof buf, "set(prop %d)", (int)c->prop); break;
+    case MOCK_CALL_MOVE: snprintf(buf, sizeof buf, "move(kind %d)", (int)c->move.kind); break;
+    default: snprintf(buf, sizeof buf, "action(%d)", (int)c->action); break;
+    }
+    return buf;
+}
+
+void mock_assert_no_effect(const mock_t *m, const char *file, int line)
+{
+    mock_check(m->n_calls == 0, m, file, line, "expected no HAL setter/move/action; got %zu, first %s",
+               m->n_calls, m->n_calls ? mock_call_name(&m->calls[0]) : "");
+}
+
+void mock_assert_error(mock_t *m, const char *line_text, const char *phrase, const char *file,
+                       int line)
+{
+    char want[160];
+    snprintf(want, sizeof want, "error: %s", phrase);
+    char want_line[200];
+    mock_reply_line(want_line, sizeof want_line, want, false);
+    mock_send_line(m, line_text);
+    mock_check(strcmp(m->out, want_line) == 0, m, file, line, "expected reply \"%s\"",
+               mock_escape(want_line, strlen(want_line)));
+    mock_assert_no_effect(m, file, line);
+}
+
+void mock_assert_silent_no_effect(mock_t *m, const char *line_text, const char *file, int line)
+{
+    mock_send_line(m, line_text);
+    mock_check(m->out_len == 0, m, file, line, "expected no reply");
+    mock_assert_no_effect(m, file, line);
+}
+
+const daran_move_t *mock_assert_move(mock_t *m, const char *line_text, const char *file, int line)
+{
+    mock_send_line(m, line_text);
+    mock_check(m->out_len == 0, m, file, line, "expected an accepted, silent motion command");
+    mock_check(m->n_calls == 2 && m->calls[0].kind == MOCK_CALL_MOVE &&
+                   m->calls[1].kind == MOCK_CALL_ACTION &&
+                   m->calls[1].action == DARAN_ACTION_FEED_WATCHDOG,
+               m, file, line, "expected exactly move + FEED_WATCHDOG (D22); got %zu calls, first %s",
+               m->n_calls, m->n_calls ? mock_call_name(&m->calls[0]) : "");
+    return &m->calls[0].move;
+}
+
+daran_value_t mock_assert_set(mock_t *m, const char *line_text, daran_prop_t prop,
+                              const char *file, int line)
+{
+    mock_send_line(m, line_text);
+    mock_check(m->out_len == 0, m, file, line, "expected an accepted, silent write");
+    mock_check(m->n_calls == 1 && m->calls[0].kind == MOCK_CALL_SET && m->calls[0].prop == prop, m,
+               file, line, "expected exactly one set(prop %d); got %zu calls, first %s", (int)prop,
+               m->n_calls, m->n_calls ? mock_call_name(&m->calls[0]) : "");
+    return m->calls[0].value;
+}
+
+void mock_assert_action(mock_t *m, const char *line_text, daran_action_t action, const char *file,
+                        int line)
+{
+    mock_send_line(m, line_text);
+    mock_check(m->out_len == 0, m, file, line, "expected an accepted, silent command");
+    mock_check(m->n_calls == 1 && m->calls[0].kind == MOCK_CALL_ACTION &&
+                   m->calls[0].action == action,
+               m, file, line, "expected exactly action(%d); got %zu calls, first %s", (int)action,
+               m->n_calls, m->n_calls ? mock_call_name(&m->calls[0]) : "");
+}
+
+const char *mock_assert_query(mock_t *m, const char *line_text, const char *file, int line)
+{
+    mock_send_line(m, line_text);
+    mock_check(m->n_writes == 1, m, file, line, "expected one reply line, got %zu", m->n_writes);
+    mock_check(strncmp(m->out, "error", 5) != 0, m, file, line, "expected a value reply");
+    mock_assert_no_effect(m, file, line);
+    return m->out;
+}
+
+static bool mock_same_float(float a, float b) { return a == b || (a != a && b != b); }
+
+void mock_assert_move_equals(const mock_t *m, const daran_move_t *got,
+                             const mock_move_expect_t *w, const char *file, int line)
+{
+    mock_check(got->kind == w->kind, m, file, line, "move kind: expected %d, got %d", (int)w->kind,
+               (int)got->kind);
+    mock_check(got->given == w->given, m, file, line, "move given: expected %u, got %u", w->given,
+               (unsigned)got->given);
+    mock_check(mock_same_float(got->pos_deg, w->pos), m, file, line,
+               "pos_deg: expected %.9g, got %.9g", (double)w->pos, (double)got->pos_deg);
+    mock_check(mock_same_float(got->vel_rpm, w->vel), m, file, line,
+               "vel_rpm: expected %.9g, got %.9g", (double)w->vel, (double)got->vel_rpm);
+    mock_check(mock_same_float(got->torque_nm, w->torque), m, file, line,
+               "torque_nm: expected %.9g, got %.9g", (double)w->torque, (double)got->torque_nm);
+    mock_check(mock_same_float(got->rate, w->rate), m, file, line, "rate: expected %.9g, got %.9g",
+               (double)w->rate, (double)got->rate);
+    mock_check(mock_same_float(got->kp, w->kp), m, file, line, "kp: expected %.9g, got %.9g",
+               (double)w->kp, (double)got->kp);
+    mock_check(mock_same_float(got->kd, w->kd), m, file, line, "kd: expected %.9g, got %.9g",
+               (double)w->kd, (double)got->kd);
+}
+
+/* ---- table-generated suites ---- */
+
+void mock_suite_add(mock_suite_t *s, CMUnitTestFunction fn, void *state, const char *fmt, ...)
+{
+    assert_true(s->count < sizeof s->tests / sizeof s->tests[0]);
+    char *name = s->names[s->count];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(name, sizeof s->names[0], fmt, ap);
+    va_end(ap);
+    struct CMUnitTest *t = &s->tests[s->count++];
+    memset(t, 0, sizeof *t);
+    t->name = name;
+    t->test_func = fn;
+    t->initial_state = state;
+}
+
+int mock_suite_run(mock_suite_t *s, const char *group)
+{
+    return _cmocka_run_group_tests(group, s->tests, s->count, NULL, NULL);
+}

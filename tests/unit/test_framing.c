@@ -1,0 +1,491 @@
+/* Unit tests of line framing and the receive ring: line ends, blank lines,
+ * the 128-byte limit (D1, D2), invalid bytes, arbitrary chunking of the
+ * byte input, ring overrun (D3) and daran_process_line(). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mock_hal.h"
+
+static void make_padded(char *buf, const char *head, size_t total, const char *tail)
+{
+    size_t h = strlen(head), t = strlen(tail);
+    assert_true(h + t <= total);
+    memcpy(buf, head, h);
+    memset(buf + h, ' ', total - h - t);
+    memcpy(buf + total - t, tail, t);
+    buf[total] = '\0';
+}
+
+static void test_lf_ends_a_line(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_send_raw(m, "f 1\n");
+    ASSERT_REPLY(m, "0 0\n");
+}
+
+static void test_crlf_ends_a_line(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_send_raw(m, "f 1\r\n");
+    ASSERT_REPLY(m, "0 0\n");
+    mock_send_raw(m, "t 1 10 0 25\r\n");
+    ASSERT_REPLY(m, "");
+    assert_int_equal(mock_count(m, MOCK_CALL_MOVE), 1);
+}
+
+static void test_cr_anywhere_is_whitespace(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_send_raw(m, "f\r1\n");
+    ASSERT_REPLY(m, "0 0\n");
+    mock_send_raw(m, "\rf 1\r\r\n");
+    ASSERT_REPLY(m, "0 0\n");
+    const daran_move_t *mv = ASSERT_MOVE(m, "t\r1\r10\r0\r25\r");
+    ASSERT_MOVE_EQUALS(m, mv, {DARAN_MOVE_FILTERED_POSITION, DARAN_GIVEN_RATE, 10, 0, 0, 25, 0, 0});
+}
+
+static void test_blank_lines_get_no_reply(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_SILENT(m, "");
+    ASSERT_SILENT(m, "   ");
+    ASSERT_SILENT(m, "\t \t");
+    ASSERT_SILENT(m, "\r");
+    ASSERT_SILENT(m, " \r \t\r");
+}
+
+static void test_poll_counts_blank_lines_too(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    assert_int_equal(daran_rx_write(&m->drive, "\n \nf 1\nf", 8), 8);
+    assert_int_equal(daran_poll(&m->drive), 3);
+    ASSERT_REPLY(m, "0 0\n");
+    assert_int_equal(daran_poll(&m->drive), 0);
+    assert_int_equal(daran_rx_write(&m->drive, " 1\n", 3), 3);
+    assert_int_equal(daran_poll(&m->drive), 1);
+    ASSERT_REPLY(m, "0 0\n");
+}
+
+static void test_line_of_exactly_128_bytes_is_accepted(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    char buf[DARAN_LINE_MAX + 1];
+    make_padded(buf, "f 1", DARAN_LINE_MAX, "");
+    mock_send_line(m, buf);
+    ASSERT_REPLY(m, "0 0\n");
+    /* the \r counts toward the limit (D1) */
+    make_padded(buf, "f 1", DARAN_LINE_MAX, "\r");
+    mock_send_line(m, buf);
+    ASSERT_REPLY(m, "0 0\n");
+}
+
+static void test_line_of_128_bytes_with_checksum_is_accepted(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    char payload[DARAN_LINE_MAX + 1], line[DARAN_LINE_MAX + 16];
+    /* payload + "*NN" must total 128: pad so that the checksum has 2 or 3 digits */
+    for (size_t pad = DARAN_LINE_MAX - 6; pad > DARAN_LINE_MAX - 12; pad--) {
+        make_padded(payload, "t 1 10", pad, "");
+        snprintf(line, sizeof line, "%s*%u", payload, mock_xor(payload));
+        if (strlen(line) == DARAN_LINE_MAX)
+            break;
+    }
+    assert_int_equal(strlen(line), DARAN_LINE_MAX);
+    const daran_move_t *mv = ASSERT_MOVE(m, line);
+    assert_true(mv->pos_deg == 10.0f);
+}
+
+static void test_line_of_129_bytes_is_too_long_once_and_the_next_line_works(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    char buf[DARAN_LINE_MAX + 2];
+    make_padded(buf, "t 1 10", DARAN_LINE_MAX + 1, "");
+    ASSERT_ERROR(m, buf, "line too long");
+    make_padded(buf, "f 1", DARAN_LINE_MAX, "\r");
+    strcat(buf, " ");
+    ASSERT_ERROR(m, buf, "line too long");
+    mock_send_line(m, "f 1");
+    ASSERT_REPLY(m, "0 0\n");
+}
+
+static void test_very_long_line_is_answered_once(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    char buf[DARAN_LINE_MAX * 4 + 1];
+    make_padded(buf, "t 1 10", DARAN_LINE_MAX * 4, "0");
+    ASSERT_ERROR(m, buf, "line too long");
+    assert_int_equal(m->n_writes, 1);
+    ASSERT_MOVE(m, "t 1 10");
+}
+
+static void test_overlong_line_with_invalid_byte_is_too_long(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    char buf[DARAN_LINE_MAX * 2 + 1];
+    /* invalid byte early, length found later (D2) */
+    make_padded(buf, "t 1 \x01", DARAN_LINE_MAX * 2, "");
+    ASSERT_ERROR(m, buf, "line too long");
+    /* invalid byte after the 128th byte */
+    make_padded(buf, "t 1 10", DARAN_LINE_MAX * 2, "\x80");
+    ASSERT_ERROR(m, buf, "line too long");
+    mock_send_line(m, "f 1");
+    ASSERT_REPLY(m, "0 0\n");
+}
+
+static void test_overlong_line_for_another_drive_is_still_answered(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    char buf[DARAN_LINE_MAX + 11];
+    make_padded(buf, "t 7 10", DARAN_LINE_MAX + 10, "");
+    ASSERT_ERROR(m, buf, "line too long");
+}
+
+/* ---- every invalid byte class, one case per byte ---- */
+
+static void invalid_byte_case(void **state)
+{
+    uint8_t b = (uint8_t)(uintptr_t)*state;
+    mock_t *m = mock_new();
+    const char *places[] = {"@f 1", "f@1", "f 1@", "t 1 1@0 0 25", "t 9 10@"};
+    for (size_t i = 0; i < sizeof places / sizeof places[0]; i++) {
+        char line[32];
+        strcpy(line, places[i]);
+        *strchr(line, '@') = (char)b;
+        size_t len = strlen(places[i]);
+        line[len] = '\n';
+        mock_clear(m);
+        mock_send_bytes(m, line, len + 1, 0);
+        ASSERT_REPLY(m, "error: invalid character\n");
+        ASSERT_NO_EFFECT(m);
+        /* recovery: the next line works */
+        mock_send_line(m, "f 1");
+        ASSERT_REPLY(m, "0 0\n");
+    }
+}
+
+static void test_several_invalid_bytes_answer_once(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_clear(m);
+    mock_send_bytes(m, "t\x01 1\x02 10\x7f\xff\n", 13, 0);
+    ASSERT_REPLY(m, "error: invalid character\n");
+    ASSERT_NO_EFFECT(m);
+}
+
+static void test_tab_and_printable_ascii_are_allowed(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    /* every printable byte is accepted by the framer: the line is judged later */
+    char line[200];
+    size_t k = 0;
+    line[k++] = 'x';
+    line[k++] = ' ';
+    for (int c = 0x21; c <= 0x7e; c++)
+        if (c != '*')
+            line[k++] = (char)c;
+    line[k] = '\0';
+    ASSERT_ERROR(m, line, "unknown command");
+    mock_send_line(m, "f\t1\t");
+    ASSERT_REPLY(m, "0 0\n");
+}
+
+/* ---- chunked byte input ---- */
+
+static const char *const script[] = {
+    "t 1 10 0 25\n",
+    "f 1\n",
+    "x 1\n",
+    "q 1 50.0 7.5 2.5\r\n",
+    "\n",
+    " \t \n",
+    "w axis1.output_shaft.pos_setpoint 150\n",
+    "r axis1.output_shaft.pos_setpoint\n",
+    "f 1 *87\n",
+    "f 1 *88\n",
+    "e 1\n",
+    "ms 1 10 0 5\n",
+    "mt 0 0\n",
+    "t 1 \x01\n",
+    "t 2 10\n",
+    "v 1 12.5 2.5 2 \n",
+    "r config.uart_baudrate 1\n",
+    "u 1\n",
+    "d 1 10 0 0.5 0.1 0.01\n",
+};
+
+typedef struct run_result {
+    char out[4096];
+    mock_call_t calls[64];
+    size_t n_calls;
+} run_result_t;
+
+static run_result_t whole_run, chunk_run;
+
+static void run_script(run_result_t *r, size_t chunk, unsigned seed)
+{
+    mock_t *m = mock_new();
+    mock_clear(m);
+    static char all[4096];
+    size_t n = 0;
+    for (size_t i = 0; i < sizeof script / sizeof script[0]; i++) {
+        size_t l = strlen(script[i]);
+        if (chunk == 0) {
+            mock_send_bytes(m, script[i], l, l);
+        } else {
+            memcpy(all + n, script[i], l);
+            n += l;
+        }
+    }
+    /* a long line, longer than the ring, at the end of every run */
+    char lng[DARAN_LINE_MAX * 2 + 2];
+    make_padded(lng, "t 1 5", DARAN_LINE_MAX * 2, "\n");
+    if (chunk == 0) {
+        mock_send_bytes(m, lng, strlen(lng), 16);
+        mock_send_bytes(m, "f 1\n", 4, 4);
+    } else {
+        memcpy(all + n, lng, strlen(lng));
+        n += strlen(lng);
+        memcpy(all + n, "f 1\n", 4);
+        n += 4;
+        size_t pos = 0;
+        while (pos < n) {
+            size_t c = chunk;
+            if (chunk == (size_t)-1) {
+                seed = seed * 1103515245u + 12345u;
+                c = 1 + (seed >> 16) % 23;
+            }
+            if (c > n - pos)
+                c = n - pos;
+            assert_int_equal(daran_rx_write(&m->drive, all + pos, c), c);
+            (void)daran_poll(&m->drive);
+            pos += c;
+        }
+    }
+    assert_true(m->out_len < sizeof r->out);
+    memcpy(r->out, m->out, m->out_len + 1);
+    assert_true(m->n_calls <= 64);
+    memcpy(r->calls, m->calls, m->n_calls * sizeof m->calls[0]);
+    r->n_calls = m->n_calls;
+}
+
+static void assert_same_run(const run_result_t *a, const run_result_t *b)
+{
+    assert_string_equal(a->out, b->out);
+    assert_int_equal(a->n_calls, b->n_calls);
+    for (size_t i = 0; i < a->n_calls; i++) {
+        const mock_call_t *x = &a->calls[i], *y = &b->calls[i];
+        assert_int_equal(x->kind, y->kind);
+        if (x->kind == MOCK_CALL_SET) {
+            assert_int_equal(x->prop, y->prop);
+            assert_memory_equal(&x->value, &y->value, sizeof x->value);
+        } else if (x->kind == MOCK_CALL_ACTION) {
+            assert_int_equal(x->action, y->action);
+        } else {
+            assert_int_equal(x->move.kind, y->move.kind);
+            assert_int_equal(x->move.given, y->move.given);
+            assert_true(x->move.pos_deg == y->move.pos_deg);
+            assert_true(x->move.vel_rpm == y->move.vel_rpm);
+            assert_true(x->move.torque_nm == y->move.torque_nm);
+            assert_true(x->move.rate == y->move.rate);
+            assert_true(x->move.kp == y->move.kp);
+            assert_true(x->move.kd == y->move.kd);
+        }
+    }
+}
+
+static void chunk_case(void **state)
+{
+    size_t chunk = (size_t)(uintptr_t)*state;
+    run_script(&whole_run, 0, 0);
+    /* sanity: the reference run did what the script says */
+    assert_non_null(strstr(whole_run.out, "error: unknown command\n"));
+    assert_non_null(strstr(whole_run.out, "error: invalid character\n"));
+    assert_non_null(strstr(whole_run.out, "error: line too long\n"));
+    assert_true(whole_run.n_calls >= 10);
+    if (chunk == (size_t)-1) {
+        for (unsigned seed = 1; seed <= 20; seed++) {
+            run_script(&chunk_run, chunk, seed);
+            assert_same_run(&whole_run, &chunk_run);
+        }
+    } else {
+        run_script(&chunk_run, chunk, 0);
+        assert_same_run(&whole_run, &chunk_run);
+    }
+}
+
+/* ---- ring overrun (D3) ---- */
+
+static void test_ring_overrun_discards_the_damaged_line_as_too_long(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_clear(m);
+    /* 40 lines of 5 bytes, never polled: the ring overflows inside a line */
+    char flood[200];
+    for (int i = 0; i < 40; i++)
+        memcpy(flood + 5 * i, "f 1 \n", 5);
+    size_t queued = daran_rx_write(&m->drive, flood, sizeof flood);
+    assert_true(queued < sizeof flood);
+    assert_true(queued >= DARAN_RX_RING_SIZE - 1 && queued <= DARAN_RX_RING_SIZE);
+    assert_int_equal(daran_rx_dropped(&m->drive), sizeof flood - queued);
+    (void)daran_poll(&m->drive);
+    /* every whole line that fitted executes once */
+    char want[4096] = "";
+    for (size_t i = 0; i < queued / 5; i++)
+        strcat(want, "0 0\n");
+    ASSERT_REPLY(m, want);
+    /* the line that lost bytes meets its end now: discarded, never executed */
+    mock_send_raw(m, "t 1 10\n");
+    ASSERT_REPLY(m, "error: line too long\n");
+    ASSERT_NO_EFFECT(m);
+    /* later lines execute exactly once */
+    mock_send_raw(m, "t 1 10\nf 1\n");
+    ASSERT_REPLY(m, "0 0\n");
+    assert_int_equal(mock_count(m, MOCK_CALL_MOVE), 1);
+    assert_int_equal(daran_rx_dropped(&m->drive), sizeof flood - queued);
+}
+
+static void test_ring_overrun_never_executes_a_spliced_motion_line(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_clear(m);
+    /* 31 whole lines, then a motion line whose digits are lost to the overrun */
+    char fill[31 * 4 + 8];
+    for (int i = 0; i < 31; i++)
+        memcpy(fill + 4 * i, "u 1\n", 4);
+    memcpy(fill + 124, "t 1 9999", 8);
+    size_t queued = daran_rx_write(&m->drive, fill, sizeof fill);
+    assert_true(queued < sizeof fill);
+    assert_false(daran_rx_byte(&m->drive, '9'));
+    assert_int_equal(daran_rx_dropped(&m->drive), sizeof fill - queued + 1);
+    (void)daran_poll(&m->drive);
+    ASSERT_REPLY(m, "");
+    assert_int_equal(mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG), 31);
+    mock_clear(m);
+    /* what is left ("t 1 " or "t 1") + "0" would read as a valid line */
+    mock_send_raw(m, "0\n");
+    ASSERT_REPLY(m, "error: line too long\n");
+    ASSERT_NO_EFFECT(m);
+    ASSERT_MOVE(m, "t 1 20");
+}
+
+static void test_rx_byte_accepts_until_the_ring_is_full(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    size_t ok = 0;
+    for (int i = 0; i < DARAN_RX_RING_SIZE + 8; i++)
+        ok += daran_rx_byte(&m->drive, ' ');
+    assert_true(ok >= DARAN_RX_RING_SIZE - 1 && ok <= DARAN_RX_RING_SIZE);
+    assert_int_equal(daran_rx_dropped(&m->drive), DARAN_RX_RING_SIZE + 8 - ok);
+    (void)daran_poll(&m->drive);
+    mock_clear(m);
+    mock_send_raw(m, "\n");
+    ASSERT_REPLY(m, "error: line too long\n");
+    mock_send_raw(m, "f 1\n");
+    ASSERT_REPLY(m, "0 0\n");
+}
+
+static void test_rx_dropped_starts_at_zero(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    assert_int_equal(daran_rx_dropped(&m->drive), 0);
+    mock_send_raw(m, "f 1\n");
+    assert_int_equal(daran_rx_dropped(&m->drive), 0);
+}
+
+/* ---- daran_process_line ---- */
+
+static void test_process_line_runs_a_framed_line(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_clear(m);
+    assert_int_equal(daran_process_line(&m->drive, "f 1", 3), DARAN_OK);
+    ASSERT_REPLY(m, "0 0\n");
+    assert_int_equal(daran_process_line(&m->drive, "f 1\r", 4), DARAN_OK);
+    ASSERT_REPLY(m, "0 0\n");
+    assert_int_equal(daran_process_line(&m->drive, "t 1 10", 6), DARAN_OK);
+    assert_int_equal(mock_count(m, MOCK_CALL_MOVE), 1);
+    assert_int_equal(daran_process_line(&m->drive, "", 0), DARAN_OK);
+    assert_int_equal(daran_process_line(&m->drive, "f 2", 3), DARAN_OK);
+    ASSERT_REPLY(m, "");
+}
+
+static void test_process_line_returns_the_error_it_answered(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_clear(m);
+    assert_int_equal(daran_process_line(&m->drive, "x 1", 3), DARAN_ERR_UNKNOWN_COMMAND);
+    ASSERT_REPLY(m, "error: unknown command\n");
+    assert_int_equal(daran_process_line(&m->drive, "f\0001", 3), DARAN_ERR_INVALID_CHARACTER);
+    ASSERT_REPLY(m, "error: invalid character\n");
+    char buf[DARAN_LINE_MAX + 2];
+    make_padded(buf, "f 1", DARAN_LINE_MAX + 1, "");
+    assert_int_equal(daran_process_line(&m->drive, buf, DARAN_LINE_MAX + 1), DARAN_ERR_LINE_TOO_LONG);
+    ASSERT_REPLY(m, "error: line too long\n");
+    assert_int_equal(daran_process_line(&m->drive, "t 1 10 0 0", 10), DARAN_ERR_OUT_OF_RANGE);
+    ASSERT_REPLY(m, "error: value out of range\n");
+    ASSERT_NO_EFFECT(m);
+}
+
+int main(void)
+{
+    static mock_suite_t s;
+#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    ADD(test_lf_ends_a_line);
+    ADD(test_crlf_ends_a_line);
+    ADD(test_cr_anywhere_is_whitespace);
+    ADD(test_blank_lines_get_no_reply);
+    ADD(test_poll_counts_blank_lines_too);
+    ADD(test_line_of_exactly_128_bytes_is_accepted);
+    ADD(test_line_of_128_bytes_with_checksum_is_accepted);
+    ADD(test_line_of_129_bytes_is_too_long_once_and_the_next_line_works);
+    ADD(test_very_long_line_is_answered_once);
+    ADD(test_overlong_line_with_invalid_byte_is_too_long);
+    ADD(test_overlong_line_for_another_drive_is_still_answered);
+    ADD(test_several_invalid_bytes_answer_once);
+    ADD(test_tab_and_printable_ascii_are_allowed);
+    for (unsigned b = 0; b <= 0xff; b++) {
+        bool bad = b < 0x20 || b >= 0x7f;
+        if (b == '\t' || b == '\r' || b == '\n')
+            bad = false;
+        bool listed = b <= 0x1f || b == 0x7f || b == 0x80 || b == 0xff;
+        if (bad && listed)
+            mock_suite_add(&s, invalid_byte_case, (void *)(uintptr_t)b,
+                           "test_byte_0x%02X_is_an_invalid_character_and_the_next_line_works", b);
+    }
+    for (unsigned b = 0x81; b < 0xff; b += 0x1f)
+        mock_suite_add(&s, invalid_byte_case, (void *)(uintptr_t)b,
+                       "test_byte_0x%02X_is_an_invalid_character_and_the_next_line_works", b);
+    static const size_t chunks[] = {1, 2, 3, 7, 13};
+    for (size_t i = 0; i < sizeof chunks / sizeof chunks[0]; i++)
+        mock_suite_add(&s, chunk_case, (void *)(uintptr_t)chunks[i],
+                       "test_input_in_chunks_of_%zu_bytes_acts_like_whole_lines", chunks[i]);
+    mock_suite_add(&s, chunk_case, (void *)(uintptr_t)(size_t)-1,
+                   "test_input_in_random_chunks_acts_like_whole_lines");
+    ADD(test_ring_overrun_discards_the_damaged_line_as_too_long);
+    ADD(test_ring_overrun_never_executes_a_spliced_motion_line);
+    ADD(test_rx_byte_accepts_until_the_ring_is_full);
+    ADD(test_rx_dropped_starts_at_zero);
+    ADD(test_process_line_runs_a_framed_line);
+    ADD(test_process_line_returns_the_error_it_answered);
+    return mock_suite_run(&s, "framing");
+}
