@@ -1,0 +1,99 @@
+/* What every command handler needs: values from fields, the drive's state,
+ * and the one road to the HAL's move(). */
+#include "internal.h"
+
+bool daran_is_finite(float value)
+{
+    /* inf - inf and nan - nan are nan, which compares unequal to 0. */
+    return value - value == 0.0f;
+}
+
+daran_result_t daran_field_f32(const daran_field_t *field, float *out)
+{
+    return daran_parse_f32(field->text, field->len, out);
+}
+
+daran_result_t daran_field_positive(const daran_field_t *field, float *out)
+{
+    daran_result_t result = daran_parse_f32(field->text, field->len, out);
+    if (result == DARAN_OK && !(*out > 0.0f)) {
+        result = DARAN_ERR_OUT_OF_RANGE;
+    }
+    return result;
+}
+
+daran_result_t daran_field_non_negative(const daran_field_t *field, float *out)
+{
+    daran_result_t result = daran_parse_f32(field->text, field->len, out);
+    if (result == DARAN_OK && !(*out >= 0.0f)) {
+        result = DARAN_ERR_OUT_OF_RANGE;
+    }
+    return result;
+}
+
+daran_result_t daran_field_mode(const daran_field_t *field, uint32_t allowed, uint32_t *out)
+{
+    uint64_t mode;
+    daran_result_t result = daran_parse_u64(field->text, field->len, &mode);
+    if (result == DARAN_ERR_INVALID_VALUE) {
+        return result;
+    }
+    if (result != DARAN_OK || mode >= 32u || ((allowed >> mode) & 1u) == 0u) {
+        return DARAN_ERR_INVALID_MODE;
+    }
+    *out = (uint32_t)mode;
+    return DARAN_OK;
+}
+
+daran_result_t daran_field_motor(const daran_field_t *field, uint8_t *out)
+{
+    uint64_t id;
+    if (daran_parse_u64(field->text, field->len, &id) != DARAN_OK || id > DARAN_MOTOR_ID_MAX) {
+        return DARAN_ERR_INVALID_MOTOR;
+    }
+    *out = (uint8_t)id;
+    return DARAN_OK;
+}
+
+static daran_result_t known(daran_result_t result)
+{
+    /* A HAL may return anything; what the core does not know is a fault (D26). */
+    return (unsigned)result < (unsigned)DARAN_RESULT_COUNT ? result : DARAN_ERR_MOTOR_FAULT;
+}
+
+daran_result_t daran_get(daran_drive_t *drive, daran_prop_t prop, daran_value_t *out)
+{
+    out->u64 = 0;
+    return known(drive->hal->get(drive->hal_ctx, prop, out));
+}
+
+daran_result_t daran_check_motion_allowed(daran_drive_t *drive)
+{
+    daran_value_t value;
+    daran_result_t result = daran_get(drive, DARAN_PROP_AXIS_ERROR, &value);
+    if (result != DARAN_OK) {
+        return result;
+    }
+    if ((value.u32 & DARAN_FLAG_ESTOP) != 0u) {
+        return DARAN_ERR_ESTOP_ACTIVE;
+    }
+    if ((value.u32 & ~(uint32_t)DARAN_FLAG_WARNING_MASK) != 0u) {
+        return DARAN_ERR_MOTOR_FAULT;
+    }
+    result = daran_get(drive, DARAN_PROP_CURRENT_STATE, &value);
+    if (result != DARAN_OK) {
+        return result;
+    }
+    return value.u32 == DARAN_STATE_CLOSED_LOOP ? DARAN_OK : DARAN_ERR_MOTOR_IDLE;
+}
+
+daran_result_t daran_start_move(daran_drive_t *drive, const daran_move_t *move)
+{
+    daran_result_t result = known(drive->hal->move(drive->hal_ctx, move));
+    if (result == DARAN_OK) {
+        /* The move is done; a feed that fails cannot undo it, and the drive's
+         * own watchdog will say so if it matters (D22). */
+        (void)drive->hal->action(drive->hal_ctx, DARAN_ACTION_FEED_WATCHDOG);
+    }
+    return result;
+}

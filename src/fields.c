@@ -1,0 +1,49 @@
+/* Splitting a line into blank-separated fields: views, never copies. */
+#include "internal.h"
+
+bool daran_is_blank(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r';
+}
+
+bool daran_byte_allowed(uint8_t byte)
+{
+    return (byte >= 0x20u && byte <= 0x7Eu) || byte == '\t' || byte == '\r';
+}
+
+void daran_split_fields(const char *text, size_t len, daran_fields_t *out)
+{
+    size_t i = 0;
+    out->count = 0;
+    while (i < len) {
+        while (i < len && daran_is_blank(text[i])) {
+            i++;
+        }
+        if (i == len) {
+            break;
+        }
+        size_t start = i;
+        while (i < len && !daran_is_blank(text[i])) {
+            i++;
+        }
+        if (out->count == DARAN_FIELDS_MAX) {
+            return; /* "too many" is all the caller needs to know */
+        }
+        out->at[out->count].text = text + start;
+        out->at[out->count].len = (uint16_t)(i - start);
+        out->count++;
+    }
+}
+
+bool daran_field_equals(const daran_field_t *field, const char *text, size_t len)
+{
+    if (field->len != len) {
+        return false;
+    }
+    for (size_t i = 0; i < len; i++) {
+        if (field->text[i] != text[i]) {
+            return false;
+        }
+    }
+    return true;
+}

@@ -1,0 +1,86 @@
+/* The reply writer: builds one line in the instance's reply buffer and hands
+ * it whole to the port, with " *N" when the request carried a checksum. */
+#include "internal.h"
+
+#if DARAN_REPLY_CRLF
+#define LINE_END "\r\n"
+#else
+#define LINE_END "\n"
+#endif
+
+/* Room kept free for " *255" and the line end, so a reply is never cut there. */
+#define TAIL_ROOM (5u + sizeof LINE_END - 1u)
+
+void daran_reply_begin(daran_drive_t *drive)
+{
+    drive->reply_len = 0;
+}
+
+void daran_reply_text(daran_drive_t *drive, const char *text, size_t len)
+{
+    size_t room = DARAN_REPLY_MAX - TAIL_ROOM - drive->reply_len;
+    if (len > room) {
+        len = room; /* cannot happen with the core's replies; DARAN_REPLY_MAX is checked for them */
+    }
+    for (size_t i = 0; i < len; i++) {
+        drive->reply[drive->reply_len + i] = text[i];
+    }
+    drive->reply_len = (uint16_t)(drive->reply_len + len);
+}
+
+void daran_reply_cstr(daran_drive_t *drive, const char *text)
+{
+    size_t len = 0;
+    while (text[len] != '\0') {
+        len++;
+    }
+    daran_reply_text(drive, text, len);
+}
+
+void daran_reply_space(daran_drive_t *drive)
+{
+    daran_reply_text(drive, " ", 1);
+}
+
+void daran_reply_f32(daran_drive_t *drive, float value)
+{
+    char text[DARAN_F32_TEXT_MAX];
+    daran_reply_text(drive, text, daran_format_f32(value, text));
+}
+
+void daran_reply_u64(daran_drive_t *drive, uint64_t value)
+{
+    char text[DARAN_U64_TEXT_MAX];
+    daran_reply_text(drive, text, daran_format_u64(value, text));
+}
+
+void daran_reply_end(daran_drive_t *drive)
+{
+    size_t len = drive->reply_len;
+    char *out = drive->reply;
+    if (drive->reply_checksum) {
+        uint8_t sum = (uint8_t)(daran_xor(out, len) ^ (uint8_t)' ');
+        out[len++] = ' ';
+        out[len++] = '*';
+        if (sum >= 100u) {
+            out[len++] = (char)('0' + sum / 100u);
+        }
+        if (sum >= 10u) {
+            out[len++] = (char)('0' + (sum / 10u) % 10u);
+        }
+        out[len++] = (char)('0' + sum % 10u);
+    }
+    for (size_t i = 0; i < sizeof LINE_END - 1u; i++) {
+        out[len++] = LINE_END[i];
+    }
+    drive->write(drive->write_ctx, out, len);
+    drive->reply_len = 0;
+}
+
+void daran_reply_error(daran_drive_t *drive, daran_result_t result)
+{
+    daran_reply_begin(drive);
+    daran_reply_text(drive, "error: ", 7);
+    daran_reply_cstr(drive, daran_result_phrase(result));
+    daran_reply_end(drive);
+}
