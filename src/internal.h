@@ -55,14 +55,16 @@ typedef struct daran_command {
 typedef enum daran_scope { DARAN_SCOPE_SYSTEM, DARAN_SCOPE_AXIS } daran_scope_t;
 typedef enum daran_access { DARAN_ACCESS_RO, DARAN_ACCESS_RW } daran_access_t;
 
+/* One row of the compiled property table, 4 bytes: the name lives in one
+ * shared block of characters (no pointers, no NULs), the rest in bit fields.
+ * The unit is documentation only and stays in DARAN_PROPERTY_LIST. */
 typedef struct daran_property {
-    const char *path;
-    uint8_t path_len;
-    uint8_t scope;  /* daran_scope_t */
-    uint8_t type;   /* daran_prop_type_t */
-    uint8_t access; /* daran_access_t */
-    uint8_t range;  /* daran_range_t */
-    const char *unit;
+    unsigned name_offset : 16;
+    unsigned name_len : 8;
+    unsigned scope : 1;  /* daran_scope_t */
+    unsigned access : 1; /* daran_access_t */
+    unsigned type : 2;   /* daran_prop_type_t */
+    unsigned range : 4;  /* daran_range_t */
 } daran_property_t;
 
 /* checksum.c */
@@ -88,6 +90,8 @@ extern const uint8_t daran_command_count;
 
 /* property_table.c */
 extern const daran_property_t daran_properties[DARAN_PROP_COUNT];
+/* The path of a property, without its "axisN." (not NUL-terminated). */
+const char *daran_property_name(daran_prop_t prop);
 /* DARAN_OK with *prop set, or DARAN_ERR_INVALID_PROPERTY. */
 daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t len,
                                    daran_prop_t *prop);
