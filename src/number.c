@@ -1,0 +1,572 @@
+/* Text <-> numbers for the protocol: float32 parsing correctly rounded, the
+ * shortest float32 printing, exact unsigned integers (docs/numbers.md says why
+ * each step is exact). Single-precision FPU only: no double, no libc number
+ * functions, no heap; the one big scratch is ~120 bytes in the rare slow path. */
+#include "number.h"
+
+#include <string.h>
+
+#define DARAN_F32_INF 0x7F800000u
+/* Digit counts and exponents saturate here: far beyond anything that changes a
+ * float32 or a uint64, far from int32 overflow when three of them are added. */
+#define DARAN_NUM_CAP 0x10000000L
+/* Significant digits the exact path keeps: a float32 halfway point has at most
+ * 113, so 120 decide every case; the rest only count as "non-zero". */
+#define DARAN_BIG_DIGITS 120
+/* 448 bits: D < 10^120 < 2^399 and M * 5^166 < 2^411 fit with room. */
+#define DARAN_BIG_LIMBS 14
+
+/* Leading 64 bits of 10^q, q = -64..45, truncated (bench/number/gen_pow10_table.py). */
+static const uint64_t daran_pow10_hi[110] = {
+    UINT64_C(0xA87FEA27A539E9A5), UINT64_C(0xD29FE4B18E88640E), UINT64_C(0x83A3EEEEF9153E89),
+    UINT64_C(0xA48CEAAAB75A8E2B), UINT64_C(0xCDB02555653131B6), UINT64_C(0x808E17555F3EBF11),
+    UINT64_C(0xA0B19D2AB70E6ED6), UINT64_C(0xC8DE047564D20A8B), UINT64_C(0xFB158592BE068D2E),
+    UINT64_C(0x9CED737BB6C4183D), UINT64_C(0xC428D05AA4751E4C), UINT64_C(0xF53304714D9265DF),
+    UINT64_C(0x993FE2C6D07B7FAB), UINT64_C(0xBF8FDB78849A5F96), UINT64_C(0xEF73D256A5C0F77C),
+    UINT64_C(0x95A8637627989AAD), UINT64_C(0xBB127C53B17EC159), UINT64_C(0xE9D71B689DDE71AF),
+    UINT64_C(0x9226712162AB070D), UINT64_C(0xB6B00D69BB55C8D1), UINT64_C(0xE45C10C42A2B3B05),
+    UINT64_C(0x8EB98A7A9A5B04E3), UINT64_C(0xB267ED1940F1C61C), UINT64_C(0xDF01E85F912E37A3),
+    UINT64_C(0x8B61313BBABCE2C6), UINT64_C(0xAE397D8AA96C1B77), UINT64_C(0xD9C7DCED53C72255),
+    UINT64_C(0x881CEA14545C7575), UINT64_C(0xAA242499697392D2), UINT64_C(0xD4AD2DBFC3D07787),
+    UINT64_C(0x84EC3C97DA624AB4), UINT64_C(0xA6274BBDD0FADD61), UINT64_C(0xCFB11EAD453994BA),
+    UINT64_C(0x81CEB32C4B43FCF4), UINT64_C(0xA2425FF75E14FC31), UINT64_C(0xCAD2F7F5359A3B3E),
+    UINT64_C(0xFD87B5F28300CA0D), UINT64_C(0x9E74D1B791E07E48), UINT64_C(0xC612062576589DDA),
+    UINT64_C(0xF79687AED3EEC551), UINT64_C(0x9ABE14CD44753B52), UINT64_C(0xC16D9A0095928A27),
+    UINT64_C(0xF1C90080BAF72CB1), UINT64_C(0x971DA05074DA7BEE), UINT64_C(0xBCE5086492111AEA),
+    UINT64_C(0xEC1E4A7DB69561A5), UINT64_C(0x9392EE8E921D5D07), UINT64_C(0xB877AA3236A4B449),
+    UINT64_C(0xE69594BEC44DE15B), UINT64_C(0x901D7CF73AB0ACD9), UINT64_C(0xB424DC35095CD80F),
+    UINT64_C(0xE12E13424BB40E13), UINT64_C(0x8CBCCC096F5088CB), UINT64_C(0xAFEBFF0BCB24AAFE),
+    UINT64_C(0xDBE6FECEBDEDD5BE), UINT64_C(0x89705F4136B4A597), UINT64_C(0xABCC77118461CEFC),
+    UINT64_C(0xD6BF94D5E57A42BC), UINT64_C(0x8637BD05AF6C69B5), UINT64_C(0xA7C5AC471B478423),
+    UINT64_C(0xD1B71758E219652B), UINT64_C(0x83126E978D4FDF3B), UINT64_C(0xA3D70A3D70A3D70A),
+    UINT64_C(0xCCCCCCCCCCCCCCCC), UINT64_C(0x8000000000000000), UINT64_C(0xA000000000000000),
+    UINT64_C(0xC800000000000000), UINT64_C(0xFA00000000000000), UINT64_C(0x9C40000000000000),
+    UINT64_C(0xC350000000000000), UINT64_C(0xF424000000000000), UINT64_C(0x9896800000000000),
+    UINT64_C(0xBEBC200000000000), UINT64_C(0xEE6B280000000000), UINT64_C(0x9502F90000000000),
+    UINT64_C(0xBA43B74000000000), UINT64_C(0xE8D4A51000000000), UINT64_C(0x9184E72A00000000),
+    UINT64_C(0xB5E620F480000000), UINT64_C(0xE35FA931A0000000), UINT64_C(0x8E1BC9BF04000000),
+    UINT64_C(0xB1A2BC2EC5000000), UINT64_C(0xDE0B6B3A76400000), UINT64_C(0x8AC7230489E80000),
+    UINT64_C(0xAD78EBC5AC620000), UINT64_C(0xD8D726B7177A8000), UINT64_C(0x878678326EAC9000),
+    UINT64_C(0xA968163F0A57B400), UINT64_C(0xD3C21BCECCEDA100), UINT64_C(0x84595161401484A0),
+    UINT64_C(0xA56FA5B99019A5C8), UINT64_C(0xCECB8F27F4200F3A), UINT64_C(0x813F3978F8940984),
+    UINT64_C(0xA18F07D736B90BE5), UINT64_C(0xC9F2C9CD04674EDE), UINT64_C(0xFC6F7C4045812296),
+    UINT64_C(0x9DC5ADA82B70B59D), UINT64_C(0xC5371912364CE305), UINT64_C(0xF684DF56C3E01BC6),
+    UINT64_C(0x9A130B963A6C115C), UINT64_C(0xC097CE7BC90715B3), UINT64_C(0xF0BDC21ABB48DB20),
+    UINT64_C(0x96769950B50D88F4), UINT64_C(0xBC143FA4E250EB31), UINT64_C(0xEB194F8E1AE525FD),
+    UINT64_C(0x92EFD1B8D0CF37BE), UINT64_C(0xB7ABC627050305AD), UINT64_C(0xE596B7B0C643C719),
+    UINT64_C(0x8F7E32CE7BEA5C6F), UINT64_C(0xB35DBF821AE4F38B),
+};
+
+#define DARAN_POW10_MIN (-64)
+
+typedef struct {
+    const char *mant; /* first mantissa character */
+    size_t int_len;   /* digits before the point */
+    size_t total;     /* digits of the mantissa, point excluded */
+    int32_t exp10;    /* explicit exponent, saturated */
+    int negative;
+} number_scan_t;
+
+typedef struct {
+    uint32_t w[DARAN_BIG_LIMBS]; /* little-endian limbs */
+} number_big_t;
+
+static int is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+static int32_t saturate(size_t n)
+{
+    return n > (size_t)DARAN_NUM_CAP ? (int32_t)DARAN_NUM_CAP : (int32_t)n;
+}
+
+/* floor(x / 2^n) without relying on >> of a negative int (implementation
+ * defined): x > -2^30 in every caller. */
+static int32_t floor_shift(int32_t x, unsigned n)
+{
+    uint32_t biased = (uint32_t)(x + 0x40000000L) >> n;
+    return (int32_t)biased - (int32_t)(0x40000000L >> n);
+}
+
+/* floor(log2(10^x)) for |x| <= 70 (checked against exact values by the tests). */
+static int32_t floor_log2_pow10(int32_t x)
+{
+    return floor_shift(x * INT32_C(1741647), 19);
+}
+
+static unsigned clz64(uint64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return (unsigned)__builtin_clzll(x);
+#else
+    unsigned n = 0;
+    while (!(x & (UINT64_C(1) << 63))) {
+        x <<= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
+/* High 64 bits of a * b; *lo gets the low 64. */
+static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
+{
+    uint64_t a0 = a & 0xFFFFFFFFu, a1 = a >> 32;
+    uint64_t b0 = b & 0xFFFFFFFFu, b1 = b >> 32;
+    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
+    *lo = (mid << 32) | (p00 & 0xFFFFFFFFu);
+    return p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+}
+
+static size_t count_digits(const char *t, size_t i, size_t len)
+{
+    size_t start = i;
+    while (i < len && is_digit(t[i])) {
+        i++;
+    }
+    return i - start;
+}
+
+/* The grammar [+-]?(digits[.digits*]|.digits)([eE][+-]?digits)?, all of it. */
+static int number_scan(const char *t, size_t len, number_scan_t *s)
+{
+    size_t i = 0;
+    int32_t e = 0;
+    int eneg = 0;
+    s->negative = 0;
+    if (i < len && (t[i] == '+' || t[i] == '-')) {
+        s->negative = t[i] == '-';
+        i++;
+    }
+    s->mant = t + i;
+    s->int_len = count_digits(t, i, len);
+    s->total = s->int_len;
+    i += s->int_len;
+    if (i < len && t[i] == '.') {
+        size_t n = count_digits(t, i + 1, len);
+        s->total += n;
+        i += 1 + n;
+    }
+    if (s->total == 0) {
+        return 0;
+    }
+    if (i < len && (t[i] == 'e' || t[i] == 'E')) {
+        i++;
+        if (i < len && (t[i] == '+' || t[i] == '-')) {
+            eneg = t[i] == '-';
+            i++;
+        }
+        if (i >= len || !is_digit(t[i])) {
+            return 0;
+        }
+        for (; i < len && is_digit(t[i]); i++) {
+            e = e < DARAN_NUM_CAP / 10 ? e * 10 + (t[i] - '0') : (int32_t)DARAN_NUM_CAP;
+        }
+    }
+    s->exp10 = eneg ? -e : e;
+    return i == len;
+}
+
+/* Digit i of the mantissa, the point skipped. */
+static uint32_t digit_at(const number_scan_t *s, size_t i)
+{
+    return (uint32_t)(s->mant[i + (i >= s->int_len)] - '0');
+}
+
+/* Round (m + f) * 2^e, 0 <= f < 1 (f > 0 iff sticky), m >= 2^40, to float32
+ * bits, ties to even; DARAN_F32_INF when it rounds beyond FLT_MAX. */
+static uint32_t round_bits(uint64_t m, int sticky, int32_t e)
+{
+    int32_t hb = 63 - (int32_t)clz64(m);
+    int32_t e2 = hb + e; /* value in [2^e2, 2^(e2+1)) */
+    int32_t nbits = e2 >= -126 ? 24 : e2 + 150;
+    unsigned below;
+    uint64_t r, mant;
+    if (e2 > 127) {
+        return DARAN_F32_INF;
+    }
+    if (nbits < 0) {
+        return 0; /* below 2^-150: under half the smallest subnormal */
+    }
+    below = (unsigned)(hb - nbits); /* bits under the round bit, 16..63 */
+    r = m >> below;
+    mant = r >> 1;
+    if ((r & 1u) && (sticky || (m & ((UINT64_C(1) << below) - 1u)) || (mant & 1u))) {
+        mant++;
+    }
+    if (e2 < -126) {
+        return (uint32_t)mant; /* a carry to 2^23 is exactly FLT_MIN's bits */
+    }
+    return ((uint32_t)(e2 + 126) << 23) + (uint32_t)mant; /* hidden bit bumps the exponent field */
+}
+
+static void big_muladd(number_big_t *b, uint32_t mul, uint32_t add)
+{
+    uint64_t carry = add;
+    size_t i;
+    for (i = 0; i < DARAN_BIG_LIMBS; i++) {
+        carry += (uint64_t)b->w[i] * mul;
+        b->w[i] = (uint32_t)carry;
+        carry >>= 32;
+    }
+}
+
+static void big_mul_pow5(number_big_t *b, int32_t n)
+{
+    uint32_t p = 1;
+    for (; n >= 13; n -= 13) {
+        big_muladd(b, 1220703125u, 0); /* 5^13, the largest power of 5 below 2^32 */
+    }
+    for (; n > 0; n--) {
+        p *= 5u;
+    }
+    big_muladd(b, p, 0);
+}
+
+static void big_shl(number_big_t *b, int32_t n)
+{
+    int32_t limbs = n / 32, bits = n % 32, i;
+    for (i = DARAN_BIG_LIMBS - 1; i >= 0; i--) {
+        uint32_t v = 0;
+        if (i - limbs >= 0) {
+            v = b->w[i - limbs] << bits;
+            if (bits && i - limbs - 1 >= 0) {
+                v |= b->w[i - limbs - 1] >> (32 - bits);
+            }
+        }
+        b->w[i] = v;
+    }
+}
+
+static int big_cmp(const number_big_t *a, const number_big_t *b)
+{
+    int32_t i;
+    for (i = DARAN_BIG_LIMBS - 1; i >= 0; i--) {
+        if (a->w[i] != b->w[i]) {
+            return a->w[i] > b->w[i] ? 1 : -1;
+        }
+    }
+    return 0;
+}
+
+/* The exact decision between lo and lo + 1: compare the decimal (digits from
+ * index z) with the halfway point between the two floats, in big integers. */
+static uint32_t big_decide(const number_scan_t *s, size_t z, uint32_t lo)
+{
+    number_big_t x, y;
+    uint32_t exf = lo >> 23, frac = lo & 0x7FFFFFu, chunk = 0, scale = 1;
+    int32_t f, e, c;
+    size_t i, take = s->total - z;
+    int sticky = 0;
+    if (take > DARAN_BIG_DIGITS) {
+        take = DARAN_BIG_DIGITS;
+    }
+    memset(&x, 0, sizeof x);
+    memset(&y, 0, sizeof y);
+    /* halfway = (2m + 1) * 2^f */
+    y.w[0] = 2u * (exf ? (frac | 0x800000u) : frac) + 1u;
+    f = exf ? (int32_t)exf - 151 : -150;
+    for (i = 0; i < take; i++) {
+        chunk = chunk * 10u + digit_at(s, z + i);
+        scale *= 10u;
+        if (scale == 1000000000u || i + 1 == take) {
+            big_muladd(&x, scale, chunk);
+            chunk = 0;
+            scale = 1;
+        }
+    }
+    for (i = z + take; i < s->total && !sticky; i++) {
+        sticky = digit_at(s, i) != 0;
+    }
+    e = saturate(s->int_len) - saturate(z) - (int32_t)take + s->exp10;
+    /* x * 10^e vs y * 2^f, i.e. (x * 5^e) * 2^e vs y * 2^f */
+    if (e >= 0) {
+        big_mul_pow5(&x, e);
+    } else {
+        big_mul_pow5(&y, -e);
+    }
+    if (e > f) {
+        big_shl(&x, e - f);
+    } else {
+        big_shl(&y, f - e);
+    }
+    c = big_cmp(&x, &y);
+    if (c > 0 || (c == 0 && (sticky || (lo & 1u)))) {
+        return lo + 1u;
+    }
+    return lo;
+}
+
+/* |value| = w * 10^q (w the first 19 significant digits, truncated set when
+ * a later digit is non-zero) to float32 bits. */
+static uint32_t decimal_to_bits(const number_scan_t *s, size_t z, uint64_t w, int32_t q, int truncated)
+{
+    static const float pow10f[11] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
+    uint64_t hi, lo;
+    uint32_t bits, d;
+    unsigned lz;
+    int32_t e;
+    if (!truncated && w <= (UINT64_C(1) << 24) && q >= -10 && q <= 10) {
+        /* Both operands exact in float32: one IEEE operation rounds correctly. */
+        float f = (float)(uint32_t)w;
+        f = q < 0 ? f / pow10f[-q] : f * pow10f[q];
+        memcpy(&bits, &f, sizeof bits);
+        return bits;
+    }
+    if (q < DARAN_POW10_MIN) {
+        return 0; /* < 2^64 * 10^-65 < 2^-150 */
+    }
+    if (q > 38) {
+        return DARAN_F32_INF; /* >= 10^39 */
+    }
+    lz = clz64(w);
+    hi = mul_64x64(w << lz, daran_pow10_hi[q - DARAN_POW10_MIN], &lo);
+    /* value = (hi + lo / 2^64) * 2^e, within the bounds below */
+    e = floor_log2_pow10(q) + 1 - (int32_t)lz;
+    bits = round_bits(hi, lo != 0, e);
+    if (!truncated && q >= 0 && q <= 27) {
+        return bits; /* 10^q is exact in the table: so is the product */
+    }
+    /* Truncated 10^q errs below by < 2^64 product units; truncated digits by
+     * < 17 * 2^64 more (w >= 10^18 then, so lz <= 4). */
+    d = truncated ? 19u : 2u;
+    if (hi <= UINT64_MAX - d && round_bits(hi + d, 0, e) == bits) {
+        return bits;
+    }
+    return big_decide(s, z, bits);
+}
+
+daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
+{
+    number_scan_t s;
+    size_t z = 0, take, i;
+    uint64_t w = 0;
+    uint32_t bits = 0;
+    int truncated = 0;
+    if ((text == NULL && len != 0) || out == NULL) {
+        return DARAN_ERR_BAD_ARGUMENT;
+    }
+    if (!number_scan(text, len, &s)) {
+        return DARAN_ERR_INVALID_VALUE;
+    }
+    while (z < s.total && digit_at(&s, z) == 0) {
+        z++;
+    }
+    if (z < s.total) {
+        take = s.total - z < 19 ? s.total - z : 19;
+        for (i = 0; i < take; i++) {
+            w = w * 10u + digit_at(&s, z + i);
+        }
+        for (i = z + take; i < s.total && !truncated; i++) {
+            truncated = digit_at(&s, i) != 0;
+        }
+        bits = decimal_to_bits(&s, z, w,
+                               saturate(s.int_len) - saturate(z) - (int32_t)take + s.exp10, truncated);
+        if (bits >= DARAN_F32_INF) {
+            return DARAN_ERR_OUT_OF_RANGE;
+        }
+    }
+    bits |= (uint32_t)s.negative << 31;
+    memcpy(out, &bits, sizeof bits);
+    return DARAN_OK;
+}
+
+daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out)
+{
+    number_scan_t s;
+    size_t z = 0, end, i;
+    uint64_t v = 0;
+    int32_t e;
+    if ((text == NULL && len != 0) || out == NULL) {
+        return DARAN_ERR_BAD_ARGUMENT;
+    }
+    if (!number_scan(text, len, &s)) {
+        return DARAN_ERR_INVALID_VALUE;
+    }
+    while (z < s.total && digit_at(&s, z) == 0) {
+        z++;
+    }
+    end = s.total;
+    while (end > z && digit_at(&s, end - 1) == 0) {
+        end--;
+    }
+    if (z < end) {
+        /* value = digits[z, end) * 10^e */
+        e = saturate(s.int_len) - saturate(end) + s.exp10;
+        if (e < 0) {
+            return DARAN_ERR_INVALID_VALUE; /* a non-zero digit after the point */
+        }
+        if (s.negative || end - z > 20 || (int32_t)(end - z) + e > 20) {
+            return DARAN_ERR_OUT_OF_RANGE;
+        }
+        for (i = z; i < end + (size_t)e; i++) {
+            uint32_t d = i < end ? digit_at(&s, i) : 0u;
+            if (v > UINT64_C(1844674407370955161) || (v == UINT64_C(1844674407370955161) && d > 5u)) {
+                return DARAN_ERR_OUT_OF_RANGE;
+            }
+            v = v * 10u + d;
+        }
+    }
+    *out = v;
+    return DARAN_OK;
+}
+
+/* Round to odd of g * cp / 2^64: the integer part, its last bit forced to 1
+ * when a fraction of 2^-32 or more remains. g errs by < cp / 2^64 < 2^-33, so an
+ * integer stays exact; bench/number/f32_exhaustive.c checks for every float
+ * that no non-integer lands within 2^-32 of an integer. */
+static uint32_t round_odd(uint64_t g, uint32_t cp)
+{
+    uint64_t a = (g >> 32) * cp;
+    uint64_t mid = a + (((g & 0xFFFFFFFFu) * cp) >> 32);
+    return (uint32_t)(mid >> 32) | (uint32_t)((uint32_t)mid != 0u);
+}
+
+/* Shortest decimal s * 10^*k inside the rounding interval of c * 2^q,
+ * closest to it, ties to even (the Schubfach method; docs/numbers.md). */
+static uint32_t shortest_digits(uint32_t exf, uint32_t frac, int32_t *k_out)
+{
+    uint32_t c = exf ? frac | 0x800000u : frac;
+    int32_t q = exf ? (int32_t)exf - 150 : -149;
+    int irregular = frac == 0 && exf > 1; /* the gap below is half the gap above */
+    int32_t k = floor_shift(q * INT32_C(1262611) - (irregular ? INT32_C(524031) : 0), 22);
+    unsigned h = (unsigned)(q + floor_log2_pow10(-k) + 1); /* 1..4 */
+    uint64_t g = daran_pow10_hi[-k - DARAN_POW10_MIN] + 1u;
+    uint32_t cb = c << 2, out = c & 1u; /* odd: the interval is open */
+    uint32_t vb = round_odd(g, cb << h);
+    uint32_t vbl = round_odd(g, (cb - (irregular ? 1u : 2u)) << h);
+    uint32_t vbr = round_odd(g, (cb + 2u) << h);
+    uint32_t s = vb >> 2, t;
+    int lower_in, upper_in;
+    *k_out = k;
+    if (s >= 10u) {
+        /* The interval is narrower than 10 units: at most one multiple of 10. */
+        t = s / 10u * 10u;
+        lower_in = vbl + out <= t << 2;
+        upper_in = ((t + 10u) << 2) + out <= vbr;
+        if (lower_in != upper_in) {
+            return lower_in ? t : t + 10u;
+        }
+    }
+    lower_in = vbl + out <= s << 2;
+    upper_in = ((s + 1u) << 2) + out <= vbr;
+    if (lower_in != upper_in) {
+        return lower_in ? s : s + 1u;
+    }
+    t = (s << 2) + 2u; /* the midpoint of s and s + 1, scaled like vb */
+    return vb < t || (vb == t && !(s & 1u)) ? s : s + 1u;
+}
+
+static size_t put_text(char *buf, const char *text)
+{
+    size_t n = 0;
+    for (; text[n]; n++) {
+        buf[n] = text[n];
+    }
+    return n;
+}
+
+size_t daran_format_f32(float value, char *buf)
+{
+    uint32_t bits, s;
+    char d[10];
+    int32_t k, big_k, nd = 0, i;
+    size_t n = 0;
+    memcpy(&bits, &value, sizeof bits);
+    if ((bits & 0x7FFFFFFFu) > DARAN_F32_INF) {
+        return put_text(buf, "nan");
+    }
+    if (bits >> 31) {
+        buf[n++] = '-';
+    }
+    bits &= 0x7FFFFFFFu;
+    if (bits == DARAN_F32_INF) {
+        return n + put_text(buf + n, "inf");
+    }
+    if (bits == 0) {
+        buf[n++] = '0';
+        return n;
+    }
+    s = shortest_digits(bits >> 23, bits & 0x7FFFFFu, &k);
+    while (s % 10u == 0) {
+        s /= 10u;
+        k++;
+    }
+    for (; s; s /= 10u) {
+        d[nd++] = (char)('0' + s % 10u); /* least significant first */
+    }
+    big_k = k + nd - 1; /* value = d.ddd * 10^big_k */
+    if (big_k >= -5 && big_k <= 8) {
+        if (big_k < 0) {
+            buf[n++] = '0';
+            buf[n++] = '.';
+            for (i = -1; i > big_k; i--) {
+                buf[n++] = '0';
+            }
+        }
+        for (i = nd - 1; i >= 0; i--) {
+            if (big_k >= 0 && i == nd - 2 - big_k) {
+                buf[n++] = '.';
+            }
+            buf[n++] = d[i];
+        }
+        for (i = 0; i < k; i++) {
+            buf[n++] = '0';
+        }
+        return n;
+    }
+    buf[n++] = d[nd - 1];
+    buf[n++] = '.';
+    if (nd == 1) {
+        buf[n++] = '0';
+    }
+    for (i = nd - 2; i >= 0; i--) {
+        buf[n++] = d[i];
+    }
+    buf[n++] = 'e';
+    buf[n++] = big_k < 0 ? '-' : '+';
+    big_k = big_k < 0 ? -big_k : big_k; /* float32: at most 45, two digits */
+    buf[n++] = (char)('0' + big_k / 10);
+    buf[n++] = (char)('0' + big_k % 10);
+    return n;
+}
+
+/* v / 10 without a 64-bit division (a library call on Cortex-M). */
+static uint64_t div10_u64(uint64_t v)
+{
+    uint64_t q = (v >> 1) + (v >> 2), r;
+    q += q >> 4;
+    q += q >> 8;
+    q += q >> 16;
+    q += q >> 32;
+    q >>= 3; /* q <= v / 10, short by a few at most */
+    r = v - ((q << 3) + (q << 1));
+    while (r > 9u) {
+        q++;
+        r -= 10u;
+    }
+    return q;
+}
+
+size_t daran_format_u64(uint64_t value, char *buf)
+{
+    char d[DARAN_U64_TEXT_MAX];
+    size_t nd = 0, n;
+    uint32_t small;
+    while (value > 0xFFFFFFFFu) {
+        uint64_t q = div10_u64(value);
+        d[nd++] = (char)('0' + (uint32_t)(value - ((q << 3) + (q << 1))));
+        value = q;
+    }
+    small = (uint32_t)value;
+    do {
+        d[nd++] = (char)('0' + small % 10u);
+        small /= 10u;
+    } while (small);
+    for (n = 0; n < nd; n++) {
+        buf[n] = d[nd - 1 - n];
+    }
+    return nd;
+}
