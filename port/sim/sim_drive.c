@@ -1,0 +1,101 @@
+/* The HAL of the simulated drive: maps the core's get/set/move/action calls
+ * onto the model and the non-volatile memory. */
+#include "sim_drive.h"
+
+static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+{
+    const daran_sim_drive_t *d = ctx;
+    switch (prop) {
+    case DARAN_PROP_FW_VERSION:
+        out->u64 = 0u;
+        out->u32 = DARAN_SIM_FW_VERSION;
+        return DARAN_OK;
+    case DARAN_PROP_HW_VERSION:
+        out->u64 = 0u;
+        out->u32 = DARAN_SIM_HW_VERSION;
+        return DARAN_OK;
+    case DARAN_PROP_SERIAL_NUMBER:
+        out->u64 = d->serial_number;
+        return DARAN_OK;
+    default:
+        return daran_sim_model_get(&d->model, prop, out);
+    }
+}
+
+static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
+{
+    daran_sim_drive_t *d = ctx;
+    return daran_sim_model_set(&d->model, prop, value);
+}
+
+static daran_result_t hal_move(void *ctx, const daran_move_t *move)
+{
+    daran_sim_drive_t *d = ctx;
+    return daran_sim_model_move(&d->model, move);
+}
+
+static daran_result_t hal_action(void *ctx, daran_action_t action)
+{
+    daran_sim_drive_t *d = ctx;
+    switch (action) {
+    case DARAN_ACTION_SAVE_CONFIG:
+        return daran_sim_nvm_save(&d->storage, &d->model) ? DARAN_OK : DARAN_ERR_MOTOR_FAULT;
+    case DARAN_ACTION_ERASE_CONFIG:
+        return daran_sim_nvm_erase(&d->storage) ? DARAN_OK : DARAN_ERR_MOTOR_FAULT;
+    case DARAN_ACTION_REBOOT:
+        daran_sim_drive_power_on(d);
+        return DARAN_OK;
+    case DARAN_ACTION_CLEAR_ERRORS:
+        daran_sim_model_clear_errors(&d->model);
+        return DARAN_OK;
+    case DARAN_ACTION_SET_ZERO:
+        daran_sim_model_set_zero(&d->model);
+        return DARAN_OK;
+    case DARAN_ACTION_ESTOP:
+        daran_sim_model_trip(&d->model, DARAN_FLAG_ESTOP);
+        return DARAN_OK;
+    case DARAN_ACTION_FEED_WATCHDOG:
+        daran_sim_model_feed_watchdog(&d->model);
+        return DARAN_OK;
+    default:
+        return DARAN_ERR_MOTOR_FAULT;
+    }
+}
+
+const daran_hal_t daran_sim_hal = {hal_get, hal_set, hal_move, hal_action};
+
+void daran_sim_drive_init(daran_sim_drive_t *d, uint32_t index, uint32_t tick_hz)
+{
+    daran_sim_model_init(&d->model, tick_hz);
+    daran_sim_ram_storage_init(&d->ram, &d->storage);
+    d->default_id = index + 1u;
+    d->serial_number = (uint64_t)DARAN_SIM_SERIAL_BASE + index + 1u;
+    daran_sim_drive_power_on(d);
+}
+
+void daran_sim_drive_set_storage(daran_sim_drive_t *d, const daran_sim_storage_t *st)
+{
+    d->storage = *st;
+}
+
+void daran_sim_drive_power_on(daran_sim_drive_t *d)
+{
+    d->nvm_status = daran_sim_nvm_load(&d->storage, &d->model);
+    if (d->nvm_status != DARAN_SIM_NVM_LOADED) {
+        d->model.cfg[DARAN_PROP_CAN_NODE_ID].u32 = d->default_id;
+    }
+    daran_sim_model_boot(&d->model);
+    if (d->nvm_status == DARAN_SIM_NVM_DAMAGED) {
+        daran_sim_model_trip(&d->model, DARAN_FLAG_NVM_CORRUPT);
+    }
+}
+
+uint32_t daran_sim_drive_id(const daran_sim_drive_t *d)
+{
+    return d->model.cfg[DARAN_PROP_CAN_NODE_ID].u32;
+}
+
+bool daran_sim_drive_corrupt_nvm(daran_sim_drive_t *d)
+{
+    return daran_sim_nvm_corrupt(&d->storage);
+}

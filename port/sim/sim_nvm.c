@@ -1,0 +1,310 @@
+/* The two-slot configuration store behind `ss`, `se` and boot.
+ *
+ * Slot layout (little-endian):
+ *   0  magic    commit marker, written last; a slot without it is empty
+ *   4  version  u16, DARAN_SIM_NVM_VERSION
+ *   6  length   u16, payload bytes
+ *   8  sequence u32, higher (mod 2^32) is newer
+ *  12  crc      CRC-32 of bytes 4..11 and the payload
+ *  16  payload  every configuration property (4 bytes each, in property
+ *               order), then the zero offset
+ * A save first clears the target slot's magic, then writes header and
+ * payload, then the magic: until that last byte lands the slot is not
+ * committed and the other slot still holds the previous image. */
+#include "sim_nvm.h"
+
+#include <math.h>
+#include <string.h>
+
+#define MAGIC 0x4D495344u /* every byte non-zero and not 0xFF */
+#define HEADER_SIZE 16u
+
+static bool ram_read(void *ctx, uint32_t offset, uint8_t *buf, uint32_t len)
+{
+    daran_sim_ram_storage_t *ram = ctx;
+    if (offset > DARAN_SIM_NVM_SIZE || len > DARAN_SIM_NVM_SIZE - offset) {
+        return false;
+    }
+    memcpy(buf, &ram->bytes[offset], len);
+    return true;
+}
+
+static bool ram_write(void *ctx, uint32_t offset, const uint8_t *data, uint32_t len)
+{
+    daran_sim_ram_storage_t *ram = ctx;
+    uint32_t i;
+    if (offset > DARAN_SIM_NVM_SIZE || len > DARAN_SIM_NVM_SIZE - offset) {
+        return false;
+    }
+    for (i = 0; i < len; i++) {
+        if (ram->power_cut) {
+            if (ram->cut_after == 0u) {
+                return false;
+            }
+            ram->cut_after--;
+        }
+        ram->bytes[offset + i] = data[i];
+        ram->bytes_written++;
+    }
+    return true;
+}
+
+void daran_sim_ram_storage_init(daran_sim_ram_storage_t *ram, daran_sim_storage_t *st)
+{
+    memset(ram->bytes, 0xFF, sizeof ram->bytes);
+    ram->power_cut = false;
+    ram->cut_after = 0u;
+    ram->bytes_written = 0u;
+    st->ctx = ram;
+    st->read = ram_read;
+    st->write = ram_write;
+}
+
+uint32_t daran_sim_crc32(const uint8_t *data, uint32_t len, uint32_t crc)
+{
+    uint32_t i;
+    int bit;
+    crc = ~crc;
+    for (i = 0; i < len; i++) {
+        crc ^= data[i];
+        for (bit = 0; bit < 8; bit++) {
+            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+        }
+    }
+    return ~crc;
+}
+
+static void put_u32(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)v;
+    p[1] = (uint8_t)(v >> 8);
+    p[2] = (uint8_t)(v >> 16);
+    p[3] = (uint8_t)(v >> 24);
+}
+
+static uint32_t get_u32(const uint8_t *p)
+{
+    return (uint32_t)p[0] | ((uint32_t)p[1] << 8) | ((uint32_t)p[2] << 16) |
+           ((uint32_t)p[3] << 24);
+}
+
+static uint32_t f32_bits(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+static float bits_f32(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+#define DARAN_SIM_IS_F32_(id, path, scope, type, access, range, unit) \
+    (uint8_t)(DARAN_TYPE_##type == DARAN_TYPE_F32),
+static const uint8_t prop_is_f32[DARAN_PROP_COUNT] = {
+    DARAN_PROPERTY_LIST(DARAN_SIM_IS_F32_)
+};
+#undef DARAN_SIM_IS_F32_
+
+static bool is_f32_prop(daran_prop_t prop)
+{
+    return prop_is_f32[prop] != 0u;
+}
+
+static uint32_t payload_size(void)
+{
+    uint32_t n = 4u; /* zero offset */
+    int p;
+    for (p = 0; p < (int)DARAN_PROP_COUNT; p++) {
+        if (daran_sim_is_config_prop((daran_prop_t)p)) {
+            n += 4u;
+        }
+    }
+    return n;
+}
+
+uint32_t daran_sim_nvm_save_size(void)
+{
+    return 4u + (HEADER_SIZE - 4u) + payload_size() + 4u;
+}
+
+static uint32_t image_crc(const uint8_t *slot, uint32_t len)
+{
+    uint32_t crc = daran_sim_crc32(slot + 4, 8u, 0u);
+    return daran_sim_crc32(slot + HEADER_SIZE, len, crc);
+}
+
+typedef enum { SLOT_EMPTY, SLOT_INTACT, SLOT_DAMAGED } slot_state_t;
+
+static slot_state_t read_slot(const daran_sim_storage_t *st, uint32_t index,
+                              uint8_t slot[DARAN_SIM_NVM_SLOT_SIZE], uint32_t *seq)
+{
+    uint32_t len;
+    if (!st->read(st->ctx, index * DARAN_SIM_NVM_SLOT_SIZE, slot, DARAN_SIM_NVM_SLOT_SIZE)) {
+        return SLOT_DAMAGED;
+    }
+    if (get_u32(slot) != MAGIC) {
+        return SLOT_EMPTY;
+    }
+    len = (uint32_t)slot[6] | ((uint32_t)slot[7] << 8);
+    if (((uint32_t)slot[4] | ((uint32_t)slot[5] << 8)) != DARAN_SIM_NVM_VERSION ||
+        len != payload_size() || image_crc(slot, len) != get_u32(slot + 12)) {
+        return SLOT_DAMAGED;
+    }
+    *seq = get_u32(slot + 8);
+    return SLOT_INTACT;
+}
+
+static bool unpack(const uint8_t *payload, daran_sim_model_t *m)
+{
+    daran_value_t cfg[DARAN_PROP_COUNT];
+    uint32_t off = 0u;
+    int p;
+    float zero;
+    memcpy(cfg, m->cfg, sizeof cfg);
+    for (p = 0; p < (int)DARAN_PROP_COUNT; p++) {
+        if (!daran_sim_is_config_prop((daran_prop_t)p)) {
+            continue;
+        }
+        if (is_f32_prop((daran_prop_t)p)) {
+            cfg[p].f32 = bits_f32(get_u32(payload + off));
+            if (!isfinite(cfg[p].f32)) {
+                return false;
+            }
+        } else {
+            cfg[p].u32 = get_u32(payload + off);
+        }
+        off += 4u;
+    }
+    zero = bits_f32(get_u32(payload + off));
+    if (!isfinite(zero)) {
+        return false;
+    }
+    memcpy(m->cfg, cfg, sizeof cfg);
+    m->zero_offset_deg = zero;
+    return true;
+}
+
+/* Index of the newest intact slot, or -1; *damaged tells whether a
+ * committed slot failed its checks. */
+static int newest_slot(const daran_sim_storage_t *st, uint8_t out[DARAN_SIM_NVM_SLOT_SIZE],
+                       bool *damaged, uint32_t *newest_seq)
+{
+    uint8_t slot[DARAN_SIM_NVM_SLOT_SIZE];
+    int best = -1;
+    uint32_t i;
+    *damaged = false;
+    for (i = 0; i < 2u; i++) {
+        uint32_t seq = 0u;
+        slot_state_t s = read_slot(st, i, slot, &seq);
+        if (s == SLOT_DAMAGED) {
+            *damaged = true;
+        } else if (s == SLOT_INTACT &&
+                   (best < 0 || (int32_t)(seq - *newest_seq) > 0)) {
+            best = (int)i;
+            *newest_seq = seq;
+            memcpy(out, slot, DARAN_SIM_NVM_SLOT_SIZE);
+        }
+    }
+    return best;
+}
+
+daran_sim_nvm_status_t daran_sim_nvm_load(const daran_sim_storage_t *st, daran_sim_model_t *m)
+{
+    uint8_t slot[DARAN_SIM_NVM_SLOT_SIZE];
+    bool damaged;
+    uint32_t seq = 0u;
+    int best = newest_slot(st, slot, &damaged, &seq);
+    daran_sim_model_default_config(m);
+    if (best >= 0 && !unpack(slot + HEADER_SIZE, m)) {
+        daran_sim_model_default_config(m);
+        damaged = true;
+        best = -1;
+    }
+    if (damaged) {
+        /* a damaged newest image could hide a newer config than the intact
+         * one: trust neither */
+        daran_sim_model_default_config(m);
+        return DARAN_SIM_NVM_DAMAGED;
+    }
+    return best >= 0 ? DARAN_SIM_NVM_LOADED : DARAN_SIM_NVM_BLANK;
+}
+
+bool daran_sim_nvm_save(const daran_sim_storage_t *st, const daran_sim_model_t *m)
+{
+    uint8_t slot[DARAN_SIM_NVM_SLOT_SIZE];
+    uint8_t scratch[DARAN_SIM_NVM_SLOT_SIZE];
+    uint8_t zero4[4] = {0u, 0u, 0u, 0u};
+    bool damaged;
+    uint32_t seq = 0u;
+    int newest = newest_slot(st, scratch, &damaged, &seq);
+    uint32_t target = newest == 0 ? 1u : 0u;
+    uint32_t base = target * DARAN_SIM_NVM_SLOT_SIZE;
+    uint32_t len = payload_size();
+    uint32_t off = HEADER_SIZE;
+    int p;
+
+    memset(slot, 0, sizeof slot);
+    slot[4] = (uint8_t)DARAN_SIM_NVM_VERSION;
+    slot[5] = (uint8_t)(DARAN_SIM_NVM_VERSION >> 8);
+    slot[6] = (uint8_t)len;
+    slot[7] = (uint8_t)(len >> 8);
+    put_u32(slot + 8, newest >= 0 ? seq + 1u : 1u);
+    for (p = 0; p < (int)DARAN_PROP_COUNT; p++) {
+        if (daran_sim_is_config_prop((daran_prop_t)p)) {
+            put_u32(slot + off, is_f32_prop((daran_prop_t)p) ? f32_bits(m->cfg[p].f32)
+                                                               : m->cfg[p].u32);
+            off += 4u;
+        }
+    }
+    put_u32(slot + off, f32_bits(m->zero_offset_deg));
+    put_u32(slot + 12, image_crc(slot, len));
+    put_u32(slot, MAGIC);
+
+    return st->write(st->ctx, base, zero4, 4u) &&
+           st->write(st->ctx, base + 4u, slot + 4, HEADER_SIZE - 4u + len) &&
+           st->write(st->ctx, base, slot, 4u);
+}
+
+bool daran_sim_nvm_erase(const daran_sim_storage_t *st)
+{
+    uint8_t scratch[DARAN_SIM_NVM_SLOT_SIZE];
+    uint8_t zero4[4] = {0u, 0u, 0u, 0u};
+    bool damaged;
+    uint32_t seq = 0u;
+    int newest = newest_slot(st, scratch, &damaged, &seq);
+    uint32_t first = newest == 0 ? 1u : 0u;
+    return st->write(st->ctx, first * DARAN_SIM_NVM_SLOT_SIZE, zero4, 4u) &&
+           st->write(st->ctx, (1u - first) * DARAN_SIM_NVM_SLOT_SIZE, zero4, 4u);
+}
+
+bool daran_sim_nvm_corrupt(const daran_sim_storage_t *st)
+{
+    uint8_t slot[DARAN_SIM_NVM_SLOT_SIZE];
+    uint8_t magic[4];
+    uint32_t i;
+    put_u32(magic, MAGIC);
+    for (i = 0; i < 2u; i++) {
+        uint32_t seq;
+        uint32_t base = i * DARAN_SIM_NVM_SLOT_SIZE;
+        slot_state_t s = read_slot(st, i, slot, &seq);
+        if (s == SLOT_INTACT) {
+            uint8_t b = (uint8_t)(slot[HEADER_SIZE] ^ 0x5Au);
+            if (!st->write(st->ctx, base + HEADER_SIZE, &b, 1u)) {
+                return false;
+            }
+        } else if (s == SLOT_EMPTY) {
+            /* nothing stored: leave a committed slot whose header is wrong,
+             * so the next boot still finds damage */
+            uint8_t bad_version[2] = {0xEEu, 0xEEu};
+            if (!st->write(st->ctx, base + 4u, bad_version, 2u) ||
+                !st->write(st->ctx, base, magic, 4u)) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
