@@ -26,3 +26,6 @@ set(DARAN_STRICT_WARNINGS
 function(daran_strict_warnings target)
   target_compile_options(${target} PRIVATE ${DARAN_STRICT_WARNINGS})
 endfunction()
+
+option(DARAN_BUILD_FUZZ "Build the libFuzzer harnesses (clang only)" OFF)
+option(DARAN_BUILD_BENCH "Build the benchmarks" ${_daran_top_level})

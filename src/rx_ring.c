@@ -81,7 +81,7 @@ size_t daran_poll(daran_drive_t *drive)
     while (tail != head) {
         uint16_t slot = (uint16_t)(tail & MASK);
         uint8_t byte = ring->bytes[slot];
-        bool damaged = (ring->damaged[slot >> 3] >> (slot & 7u)) & 1u;
+        bool damaged = (((unsigned)ring->damaged[slot >> 3] >> (slot & 7u)) & 1u) != 0u;
         FENCE();
         tail = (uint16_t)(tail + 1u);
         ring->tail = tail; /* free the slot before the line runs: the producer may refill it */
