@@ -29,3 +29,4 @@ endfunction()
 
 option(DARAN_BUILD_FUZZ "Build the libFuzzer harnesses (clang only)" OFF)
 option(DARAN_BUILD_BENCH "Build the benchmarks" ${_daran_top_level})
+option(DARAN_BUILD_FIRMWARE "Cross builds: build the example firmware and its QEMU tests" ON)
