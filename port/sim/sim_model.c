@@ -316,13 +316,22 @@ static void trap_plan(daran_sim_model_t *m, float target)
     m->trajectory_done = dist == 0.0f;
 }
 
-/* Leaving a mode that tracks the shaft (velocity, torque) for a position
- * mode must start from where the setpoint is now. */
+static bool is_position_mode(daran_sim_mode_t mode)
+{
+    return mode == DARAN_SIM_MODE_PASSTHROUGH || mode == DARAN_SIM_MODE_FILTER ||
+           mode == DARAN_SIM_MODE_TRAPEZOID;
+}
+
+/* The position setpoint belongs to the position modes: velocity and torque
+ * control leave it where it was, and a position mode continues from it (as
+ * on the ODrive-derived firmware: a drive that was spun by hand or by `c`
+ * goes back to it). The filter starts at rest unless it continues a
+ * position move. */
 static void enter_position_mode(daran_sim_model_t *m, daran_sim_mode_t mode)
 {
     if (mode == DARAN_SIM_MODE_FILTER && m->mode != DARAN_SIM_MODE_FILTER) {
         m->filt_pos = m->pos_sp;
-        m->filt_vel = m->vel_sp * DEG_S_PER_RPM;
+        m->filt_vel = is_position_mode(m->mode) ? m->vel_sp * DEG_S_PER_RPM : 0.0f;
     }
     if (m->mode == DARAN_SIM_MODE_TORQUE || m->mode == DARAN_SIM_MODE_TORQUE_RAMP ||
         m->mode == DARAN_SIM_MODE_IMPEDANCE) {
@@ -539,7 +548,6 @@ static void control(daran_sim_model_t *m)
             m->torque_ff = 0.0f;
         }
         m->vel_sp = clampf(m->vel_sp, -vlim, vlim);
-        m->pos_sp = pos;
         guard_limits(m, pos, m->vel_sp);
         if (m->mode == DARAN_SIM_MODE_PASSTHROUGH) {
             break;
@@ -554,8 +562,7 @@ static void control(daran_sim_model_t *m)
             torque = approach(m->torque_cmd, m->input_torque,
                               cfgf(m, DARAN_PROP_TORQUE_RAMP_RATE) * m->dt);
         }
-        m->pos_sp = pos;
-        m->vel_sp = m->vel_rpm;
+        m->vel_sp = 0.0f;
         guard_limits(m, pos, torque);
         if (m->mode == DARAN_SIM_MODE_PASSTHROUGH) {
             break;
