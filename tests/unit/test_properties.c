@@ -1,0 +1,415 @@
+/* Unit tests of `r` and `w` over every property of daran_properties.h (read
+ * formatting per type, write, read-only refusal, range edges on both sides,
+ * the axisN. and trailing-id forms of D8/D9), plus the float reply format of
+ * spec section 4. The rows come from the public X-macro list itself. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mock_hal.h"
+
+enum { SCOPE_SYSTEM, SCOPE_AXIS };
+enum { ACCESS_RO, ACCESS_RW };
+
+typedef struct prop_row {
+    daran_prop_t id;
+    const char *path;
+    int scope;
+    daran_prop_type_t type;
+    int access;
+    daran_range_t range;
+    const char *name;
+} prop_row_t;
+
+static const prop_row_t rows[] = {
+#define ROW(id, path, scope, type, access, range, unit)                                         \
+    {DARAN_PROP_##id, path, SCOPE_##scope, DARAN_TYPE_##type, ACCESS_##access, DARAN_RANGE_##range, \
+     #id},
+    DARAN_PROPERTY_LIST(ROW)
+#undef ROW
+};
+
+#define N_ROWS (sizeof rows / sizeof rows[0])
+
+/* "r"/"w" line for drive 1: axisN. prefix or trailing id as the scope says. */
+static void line_for(char *buf, size_t size, const prop_row_t *p, const char *word,
+                     const char *value, int id)
+{
+    char idtext[16] = "";
+    if (id >= 0)
+        snprintf(idtext, sizeof idtext, "%d", id);
+    if (p->scope == SCOPE_AXIS)
+        snprintf(buf, size, "%s axis%s.%s%s%s", word, id >= 0 ? idtext : "1", p->path,
+                 value ? " " : "", value ? value : "");
+    else
+        snprintf(buf, size, "%s %s%s%s%s%s", word, p->path, value ? " " : "", value ? value : "",
+                 id >= 0 ? " " : "", idtext);
+}
+
+static void test_the_property_list_has_every_spec_property(void **state)
+{
+    (void)state;
+    assert_int_equal(N_ROWS, DARAN_PROP_COUNT);
+    assert_int_equal(N_ROWS, 53);
+    for (size_t i = 0; i < N_ROWS; i++)
+        assert_int_equal(rows[i].id, (daran_prop_t)i);
+}
+
+/* ---- read ---- */
+
+static const char *store_sample(mock_t *m, const prop_row_t *p)
+{
+    switch (p->type) {
+    case DARAN_TYPE_F32: m->props[p->id].f32 = -12.5f; return "-12.5";
+    case DARAN_TYPE_U32:
+        if (p->id == DARAN_PROP_CAN_NODE_ID)
+            return "1";
+        m->props[p->id].u32 = 4000000000u;
+        return "4000000000";
+    case DARAN_TYPE_U64: m->props[p->id].u64 = UINT64_MAX; return "18446744073709551615";
+    case DARAN_TYPE_BOOL: m->props[p->id].u32 = 1; return "1";
+    }
+    return "";
+}
+
+static void read_case(void **state)
+{
+    const prop_row_t *p = *state;
+    mock_t *m = mock_new();
+    const char *text = store_sample(m, p);
+    char line[160], want[64];
+    mock_reply_line(want, sizeof want, text, false);
+    /* own id and the common id 0 */
+    line_for(line, sizeof line, p, "r", NULL, 1);
+    assert_string_equal(ASSERT_QUERY(m, line), want);
+    assert_true(m->n_gets >= 1);
+    line_for(line, sizeof line, p, "r", NULL, 0);
+    assert_string_equal(ASSERT_QUERY(m, line), want);
+    if (p->scope == SCOPE_SYSTEM) {
+        line_for(line, sizeof line, p, "r", NULL, -1); /* omitted id = 0 */
+        assert_string_equal(ASSERT_QUERY(m, line), want);
+    }
+    /* with a checksum */
+    char cline[180];
+    line_for(line, sizeof line, p, "r", NULL, 1);
+    mock_reply_line(want, sizeof want, text, true);
+    assert_string_equal(ASSERT_QUERY(m, mock_with_checksum(cline, sizeof cline, line)), want);
+    /* another drive's id: silent */
+    line_for(line, sizeof line, p, "r", NULL, 2);
+    ASSERT_SILENT(m, line);
+    /* the other form's id is a format error (D9) */
+    if (p->scope == SCOPE_AXIS) {
+        snprintf(line, sizeof line, "r axis1.%s 1", p->path);
+        ASSERT_ERROR(m, line, "invalid command format");
+        snprintf(line, sizeof line, "r axis1.%s 1 1", p->path);
+        ASSERT_ERROR(m, line, "invalid command format");
+    } else {
+        snprintf(line, sizeof line, "r %s 1 1", p->path);
+        ASSERT_ERROR(m, line, "invalid command format");
+    }
+}
+
+static void test_bools_read_as_0_and_1(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_TRAJECTORY_DONE].u32 = 0;
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.trajectory_done"), "0\n");
+    m->props[DARAN_PROP_TRAJECTORY_DONE].u32 = 1;
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.trajectory_done"), "1\n");
+}
+
+static void test_integers_read_in_decimal(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_SERIAL_NUMBER].u64 = 0;
+    assert_string_equal(ASSERT_QUERY(m, "r serial_number 1"), "0\n");
+    m->props[DARAN_PROP_SERIAL_NUMBER].u64 = 4294967296ull;
+    assert_string_equal(ASSERT_QUERY(m, "r serial_number"), "4294967296\n");
+    m->props[DARAN_PROP_FW_VERSION].u32 = UINT32_MAX;
+    assert_string_equal(ASSERT_QUERY(m, "r fw_version 0"), "4294967295\n");
+    m->props[DARAN_PROP_AXIS_ERROR].u32 = 0;
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.error"), "0\n");
+}
+
+/* ---- float format (spec section 4) ---- */
+
+typedef struct fmt_case {
+    float value;
+    const char *text;
+} fmt_case_t;
+
+static fmt_case_t fmt_cases[] = {
+    {100.5f, "100.5"},       {0.02f, "0.02"},          {160.0f, "160"},
+    {-3.0f, "-3"},           {1e-5f, "0.00001"},        {1.5e-7f, "1.5e-07"},
+    {3e12f, "3.0e+12"},      {1e9f, "1.0e+09"},         {0.0f, "0"},
+    {-0.0f, "-0"},           {0.1f, "0.1"},             {1e8f, "100000000"},
+    {123456792.0f, "123456790"}, {1e-6f, "1.0e-06"},    {0.0001f, "0.0001"},
+    {3.4028235e38f, "3.4028235e+38"}, {1.4e-45f, "1.0e-45"}, {16777216.0f, "16777216"},
+    {1.17549435e-38f, "1.1754944e-38"}, {-2.5e-6f, "-2.5e-06"}, {24.0f, "24"},
+    {0.3f, "0.3"},           {1.0f / 3.0f, "0.33333334"}, {999999999.0f, "1.0e+09"},
+    {12345.678f, "12345.678"}, {-0.00001f, "-0.00001"},
+};
+
+static void fmt_case_run(void **state)
+{
+    const fmt_case_t *c = *state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_INPUT_POS].f32 = c->value;
+    char want[64];
+    mock_reply_line(want, sizeof want, c->text, false);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"), want);
+}
+
+static void test_non_finite_floats_read_as_nan_inf(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_INPUT_POS].f32 = NAN;
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"), "nan\n");
+    m->props[DARAN_PROP_INPUT_POS].f32 = INFINITY;
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"), "inf\n");
+    m->props[DARAN_PROP_INPUT_POS].f32 = -INFINITY;
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"), "-inf\n");
+}
+
+/* ---- write ---- */
+
+static const char *write_sample(const prop_row_t *p)
+{
+    switch (p->range) {
+    case DARAN_RANGE_NONE: return "-12.5";
+    case DARAN_RANGE_NON_NEGATIVE:
+    case DARAN_RANGE_POSITIVE: return "2.5";
+    case DARAN_RANGE_BOOL: return "1";
+    case DARAN_RANGE_NODE_ID: return "7";
+    case DARAN_RANGE_UART_BAUD: return "9600";
+    case DARAN_RANGE_CAN_BAUD: return "250000";
+    case DARAN_RANGE_AXIS_STATE: return "1";
+    }
+    return "";
+}
+
+static void check_value(const mock_t *m, const prop_row_t *p, daran_value_t v, const char *text,
+                        int line)
+{
+    if (p->type == DARAN_TYPE_F32) {
+        float want = strtof(text, NULL);
+        mock_check(memcmp(&v.f32, &want, sizeof want) == 0, m, __FILE__, line,
+                   "%s: expected %a, got %a", p->name, (double)want, (double)v.f32);
+    } else {
+        unsigned long want = strtoul(text, NULL, 10);
+        mock_check(v.u32 == want, m, __FILE__, line, "%s: expected %lu, got %lu", p->name, want,
+                   (unsigned long)v.u32);
+    }
+}
+
+static void write_case(void **state)
+{
+    const prop_row_t *p = *state;
+    mock_t *m = mock_new();
+    char line[160];
+    const char *text = write_sample(p);
+    /* own id first: a node-id write moves the drive, id 0 still reaches it */
+    static const int ids[] = {1, 0, -1};
+    for (size_t k = 0; k < 3; k++) {
+        int id = ids[k];
+        if (id == -1 && p->scope == SCOPE_AXIS)
+            continue;
+        line_for(line, sizeof line, p, "w", text, id);
+        daran_value_t v = ASSERT_SET(m, line, p->id);
+        check_value(m, p, v, text, __LINE__);
+    }
+    /* the value reads back */
+    line_for(line, sizeof line, p, "r", NULL, 0);
+    char want[64];
+    mock_reply_line(want, sizeof want, text, false);
+    assert_string_equal(ASSERT_QUERY(m, line), want);
+    /* another drive's id: silent, nothing written */
+    line_for(line, sizeof line, p, "w", text, 2);
+    ASSERT_SILENT(m, line);
+    if (p->range == DARAN_RANGE_NODE_ID)
+        return; /* the drive now answers to another id */
+    /* malformed and non-finite values */
+    line_for(line, sizeof line, p, "w", "abc", 1);
+    ASSERT_ERROR(m, line, "invalid value");
+    line_for(line, sizeof line, p, "w", "nan", 1);
+    ASSERT_ERROR(m, line, "invalid value");
+    line_for(line, sizeof line, p, "w", "1e39", 1);
+    ASSERT_ERROR(m, line, "value out of range");
+    /* D9 field counts */
+    if (p->scope == SCOPE_AXIS) {
+        snprintf(line, sizeof line, "w axis1.%s %s 1", p->path, text);
+        ASSERT_ERROR(m, line, "invalid command format");
+    } else {
+        snprintf(line, sizeof line, "w %s %s 1 1", p->path, text);
+        ASSERT_ERROR(m, line, "invalid command format");
+    }
+    line_for(line, sizeof line, p, "w", NULL, 1);
+    if (p->scope == SCOPE_AXIS)
+        ASSERT_ERROR(m, line, "invalid command format");
+}
+
+static void read_only_case(void **state)
+{
+    const prop_row_t *p = *state;
+    mock_t *m = mock_new();
+    char line[160];
+    line_for(line, sizeof line, p, "w", "1", 1);
+    ASSERT_ERROR(m, line, "read only property");
+    line_for(line, sizeof line, p, "w", "0", 0);
+    ASSERT_ERROR(m, line, "read only property");
+    /* the property is checked before the value */
+    line_for(line, sizeof line, p, "w", "abc", 1);
+    ASSERT_ERROR(m, line, "read only property");
+}
+
+/* ---- range edges ---- */
+
+typedef struct edge {
+    const char *text;
+    bool ok;
+} edge_t;
+
+static const edge_t edges_positive[] = {
+    {"0", false}, {"-0", false}, {"-1", false}, {"-1e-45", false}, {"1e-45", true},
+    {"2.5", true}, {"3.4028235e38", true}, {NULL, false}};
+static const edge_t edges_non_negative[] = {
+    {"0", true}, {"-1e-45", false}, {"-1", false}, {"1e-45", true}, {"2.5", true}, {NULL, false}};
+static const edge_t edges_none[] = {
+    {"-3.4028235e38", true}, {"3.4028235e38", true}, {"0", true}, {"-1e-45", true}, {NULL, false}};
+static const edge_t edges_bool[] = {{"0", true}, {"1", true}, {"2", false}, {"-1", false},
+                                    {"4294967297", false}, {NULL, false}};
+static const edge_t edges_node_id[] = {{"1", true}, {"63", true}, {"0", false}, {"64", false},
+                                       {"-1", false}, {NULL, false}};
+static const edge_t edges_uart[] = {
+    {"9600", true}, {"19200", true}, {"38400", true}, {"57600", true}, {"115200", true},
+    {"4800", false}, {"0", false}, {"115201", false}, {"230400", false}, {"9601", false},
+    {NULL, false}};
+static const edge_t edges_can[] = {
+    {"125000", true}, {"250000", true}, {"500000", true}, {"1000000", true}, {"100000", false},
+    {"0", false}, {"2000000", false}, {"125001", false}, {NULL, false}};
+static const edge_t edges_state[] = {{"1", true}, {"8", true}, {"0", false}, {"2", false},
+                                     {"9", false}, {"3", false}, {NULL, false}};
+
+static const edge_t *edges_for(daran_range_t r)
+{
+    switch (r) {
+    case DARAN_RANGE_NONE: return edges_none;
+    case DARAN_RANGE_NON_NEGATIVE: return edges_non_negative;
+    case DARAN_RANGE_POSITIVE: return edges_positive;
+    case DARAN_RANGE_BOOL: return edges_bool;
+    case DARAN_RANGE_NODE_ID: return edges_node_id;
+    case DARAN_RANGE_UART_BAUD: return edges_uart;
+    case DARAN_RANGE_CAN_BAUD: return edges_can;
+    case DARAN_RANGE_AXIS_STATE: return edges_state;
+    }
+    return edges_none;
+}
+
+static void range_case(void **state)
+{
+    const prop_row_t *p = *state;
+    mock_t *m = mock_new();
+    char line[160];
+    for (const edge_t *e = edges_for(p->range); e->text; e++) {
+        /* id 0 keeps addressing this drive even after a node-id write */
+        line_for(line, sizeof line, p, "w", e->text, 0);
+        if (e->ok) {
+            daran_value_t v = ASSERT_SET(m, line, p->id);
+            check_value(m, p, v, e->text, __LINE__);
+        } else {
+            ASSERT_ERROR(m, line, "value out of range");
+        }
+    }
+}
+
+static void test_non_negative_accepts_negative_zero(void **state)
+{
+    (void)state;
+    /* -0.0 >= 0 holds in IEEE arithmetic: "-0" is not below zero */
+    mock_t *m = mock_new();
+    daran_value_t v = ASSERT_SET(m, "w axis1.controller.config.pos_gain -0", DARAN_PROP_POS_GAIN);
+    assert_true(v.f32 == 0.0f);
+}
+
+/* ---- paths ---- */
+
+static void test_unknown_paths_are_invalid_properties(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    static const char *const lines[] = {
+        "r nope", "r nope 1", "r axis1.nope", "r axis1.", "r axis1.output_shaft",
+        "r axis1.output_shaft.", "r axis1.output_shaft.input_pos.x", "r axis1.vbus_voltage",
+        "r config.can_node_id 1", "r axis1.config.uart_baudrate", "r axis5", "r axis",
+        "r vbus_voltag 1", "r vbus_voltagee 1", "r .vbus_voltage 1", "w axis1.nope 1",
+        "w nope 1", "w nope 1 1", "r a 1", "r zzzz 1", "r AAAA 1", "r ~ 1",
+    };
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++)
+        ASSERT_ERROR(m, lines[i], "invalid property");
+}
+
+static void test_a_path_for_another_drive_is_silent_whatever_it_names(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_SILENT(m, "r axis2.nope");
+    ASSERT_SILENT(m, "w axis2.nope abc");
+    ASSERT_SILENT(m, "w axis63.output_shaft.input_pos 1 2 3");
+    ASSERT_SILENT(m, "r nope 2");
+}
+
+static void test_setpoint_write_reaches_the_hal_once(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    daran_value_t v = ASSERT_SET(m, "w axis1.output_shaft.pos_setpoint 150", DARAN_PROP_POS_SETPOINT);
+    assert_true(v.f32 == 150.0f);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.pos_setpoint"), "150\n");
+}
+
+static void test_node_id_write_changes_the_address(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    (void)ASSERT_SET(m, "w axis0.config.can_node_id 5", DARAN_PROP_CAN_NODE_ID);
+    ASSERT_SILENT(m, "f 1");
+    assert_string_equal(ASSERT_QUERY(m, "f 5"), "0 0\n");
+    assert_string_equal(ASSERT_QUERY(m, "r axis5.config.can_node_id"), "5\n");
+    ASSERT_SILENT(m, "r axis1.config.can_node_id");
+    (void)ASSERT_SET(m, "w axis5.config.can_node_id 1", DARAN_PROP_CAN_NODE_ID);
+    assert_string_equal(ASSERT_QUERY(m, "f 1"), "0 0\n");
+}
+
+int main(void)
+{
+    static mock_suite_t s;
+#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    ADD(test_the_property_list_has_every_spec_property);
+    for (size_t i = 0; i < N_ROWS; i++) {
+        const prop_row_t *p = &rows[i];
+        void *st = (void *)(uintptr_t)p;
+        mock_suite_add(&s, read_case, st, "test_%s_reads_in_its_type_format", p->path);
+        if (p->access == ACCESS_RW) {
+            mock_suite_add(&s, write_case, st, "test_%s_writes_through_the_hal", p->path);
+            mock_suite_add(&s, range_case, st, "test_%s_write_range_edges", p->path);
+        } else {
+            mock_suite_add(&s, read_only_case, st, "test_%s_refuses_a_write", p->path);
+        }
+    }
+    ADD(test_bools_read_as_0_and_1);
+    ADD(test_integers_read_in_decimal);
+    for (size_t i = 0; i < sizeof fmt_cases / sizeof fmt_cases[0]; i++)
+        mock_suite_add(&s, fmt_case_run, &fmt_cases[i], "test_float_%a_reads_as_\"%s\"",
+                       (double)fmt_cases[i].value, fmt_cases[i].text);
+    ADD(test_non_finite_floats_read_as_nan_inf);
+    ADD(test_non_negative_accepts_negative_zero);
+    ADD(test_unknown_paths_are_invalid_properties);
+    ADD(test_a_path_for_another_drive_is_silent_whatever_it_names);
+    ADD(test_setpoint_write_reaches_the_hal_once);
+    ADD(test_node_id_write_changes_the_address);
+    return mock_suite_run(&s, "properties");
+}

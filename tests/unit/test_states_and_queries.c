@@ -1,0 +1,440 @@
+/* Unit tests of drive states (estop, faults, idle; D16, D18, D21, D22) and
+ * of the query commands f, g, i, e, h (D23-D25). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mock_hal.h"
+
+/* Motion lines, each with the preset its start needs ("" for none). */
+typedef struct motion { const char *preset; const char *line; } motion_t;
+
+static const motion_t motions[] = {
+    {"", "t 1 10"},          {"", "q 1 10 30 10"},      {"", "p 1 10"},
+    {"", "v 1 10"},          {"", "v 1 10 5 2"},        {"", "c 1 1"},
+    {"", "c 1 1 2 6"},       {"", "d 1 0 0 0 0 0"},     {"ms 1 10 0 5", "mt 1 0"},
+    {"ms 1 10 2 10", "mq 1 1"}, {"ms 1 10 0 0", "mp 1 0"}, {"ms 1 10 0 1", "mv 1"},
+    {"ms 1 1 0 1", "mc 1"},  {"", "t 0 10"},            {"ms 1 10 0 5", "mt 0 0"},
+};
+#define N_MOTIONS (sizeof motions / sizeof motions[0])
+
+static void set_state(mock_t *m, uint32_t flags, uint32_t st)
+{
+    m->props[DARAN_PROP_AXIS_ERROR].u32 = flags;
+    m->props[DARAN_PROP_CURRENT_STATE].u32 = st;
+    m->props[DARAN_PROP_REQUESTED_STATE].u32 = st;
+}
+
+static void send_preset(mock_t *m, const motion_t *mo)
+{
+    if (mo->preset[0]) {
+        mock_send_line(m, mo->preset);
+        ASSERT_REPLY(m, "");
+    }
+}
+
+static void estop_case(void **state)
+{
+    const motion_t *mo = *state;
+    mock_t *m = mock_new();
+    send_preset(m, mo);
+    ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
+    ASSERT_ERROR(m, mo->line, "estop active");
+}
+
+static const uint32_t blocking_flags[] = {
+    DARAN_FLAG_WATCHDOG, DARAN_FLAG_MOTOR_OVERTEMP, DARAN_FLAG_FET_OVERTEMP,
+    DARAN_FLAG_UNDERVOLTAGE, 1u << 6, 1u << 8, 1u << 31,
+    DARAN_FLAG_WATCHDOG | DARAN_FLAG_NVM_CORRUPT,
+};
+
+static void fault_case(void **state)
+{
+    const motion_t *mo = *state;
+    for (size_t i = 0; i < sizeof blocking_flags / sizeof blocking_flags[0]; i++) {
+        mock_t *m = mock_new();
+        send_preset(m, mo);
+        set_state(m, blocking_flags[i], DARAN_STATE_IDLE);
+        ASSERT_ERROR(m, mo->line, "motor fault");
+        /* a flag blocks even if the state still reads closed loop */
+        set_state(m, blocking_flags[i], DARAN_STATE_CLOSED_LOOP);
+        ASSERT_ERROR(m, mo->line, "motor fault");
+    }
+}
+
+static void idle_case(void **state)
+{
+    const motion_t *mo = *state;
+    mock_t *m = mock_new();
+    send_preset(m, mo);
+    (void)ASSERT_SET(m, "w axis1.requested_state 1", DARAN_PROP_REQUESTED_STATE);
+    ASSERT_ERROR(m, mo->line, "motor idle");
+    /* a warning flag changes nothing: still idle */
+    m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_NVM_CORRUPT;
+    ASSERT_ERROR(m, mo->line, "motor idle");
+}
+
+static void nvm_warning_case(void **state)
+{
+    const motion_t *mo = *state;
+    mock_t *m = mock_new();
+    send_preset(m, mo);
+    m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_NVM_CORRUPT;
+    ASSERT_MOVE(m, mo->line);
+}
+
+static void test_estop_wins_over_every_other_flag(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    set_state(m, 0xFFFFFFFFu, DARAN_STATE_IDLE);
+    ASSERT_ERROR(m, "t 1 10", "estop active");
+}
+
+static void test_commands_other_than_motion_work_in_estop(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
+    (void)ASSERT_SET(m, "w axis1.controller.config.pos_gain 5", DARAN_PROP_POS_GAIN);
+    ASSERT_SILENT(m, "ms 1 1 2 3");
+    ASSERT_ACTION(m, "ss 1", DARAN_ACTION_SAVE_CONFIG);
+    ASSERT_ACTION(m, "se 1", DARAN_ACTION_ERASE_CONFIG);
+    ASSERT_ACTION(m, "sz 1", DARAN_ACTION_SET_ZERO);
+    ASSERT_ACTION(m, "u 1", DARAN_ACTION_FEED_WATCHDOG);
+    ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
+    assert_string_equal(ASSERT_QUERY(m, "f 1"), "0 0\n");
+    assert_string_equal(ASSERT_QUERY(m, "e 1"), "1 estop\n");
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.current_state"), "1\n");
+    (void)ASSERT_QUERY(m, "g 1");
+    (void)ASSERT_QUERY(m, "i 1");
+    ASSERT_ACTION(m, "sc 1", DARAN_ACTION_CLEAR_ERRORS);
+}
+
+static void test_after_estop_clear_keeps_the_drive_idle_until_closed_loop(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
+    ASSERT_ERROR(m, "t 1 10", "estop active");
+    ASSERT_ACTION(m, "sc 1", DARAN_ACTION_CLEAR_ERRORS);
+    ASSERT_ERROR(m, "t 1 10", "motor idle");
+    daran_value_t v = ASSERT_SET(m, "w axis1.requested_state 8", DARAN_PROP_REQUESTED_STATE);
+    assert_int_equal(v.u32, DARAN_STATE_CLOSED_LOOP);
+    ASSERT_MOVE(m, "t 1 10");
+}
+
+static void test_closed_loop_request_is_refused_while_a_flag_is_set(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
+    ASSERT_ERROR(m, "w axis1.requested_state 8", "estop active");
+    ASSERT_ERROR(m, "w axis0.requested_state 8", "estop active");
+    /* idle may still be requested */
+    (void)ASSERT_SET(m, "w axis1.requested_state 1", DARAN_PROP_REQUESTED_STATE);
+    set_state(m, DARAN_FLAG_FET_OVERTEMP, DARAN_STATE_IDLE);
+    ASSERT_ERROR(m, "w axis1.requested_state 8", "motor fault");
+    set_state(m, DARAN_FLAG_NVM_CORRUPT, DARAN_STATE_IDLE);
+    (void)ASSERT_SET(m, "w axis1.requested_state 8", DARAN_PROP_REQUESTED_STATE);
+}
+
+static void test_closed_loop_request_checks_its_value_first(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    set_state(m, DARAN_FLAG_ESTOP, DARAN_STATE_IDLE);
+    ASSERT_ERROR(m, "w axis1.requested_state 9", "value out of range");
+    ASSERT_ERROR(m, "w axis1.requested_state x", "invalid value");
+}
+
+/* ---- watchdog (D22) ---- */
+
+static void test_accepted_motion_feeds_the_watchdog_after_its_move(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    for (size_t i = 0; i < N_MOTIONS; i++) {
+        send_preset(m, &motions[i]);
+        ASSERT_MOVE(m, motions[i].line); /* checks move then FEED_WATCHDOG */
+    }
+}
+
+static void test_refused_motion_does_not_feed_the_watchdog(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_ERROR(m, "t 1 10 0 0", "value out of range");
+    assert_int_equal(mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG), 0);
+    set_state(m, 0, DARAN_STATE_IDLE);
+    ASSERT_ERROR(m, "t 1 10", "motor idle");
+    assert_int_equal(mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG), 0);
+}
+
+static void test_u_feeds_the_watchdog_in_any_state(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_ACTION(m, "u 1", DARAN_ACTION_FEED_WATCHDOG);
+    ASSERT_ACTION(m, "u 0", DARAN_ACTION_FEED_WATCHDOG);
+    set_state(m, DARAN_FLAG_WATCHDOG, DARAN_STATE_IDLE);
+    ASSERT_ACTION(m, "u 1", DARAN_ACTION_FEED_WATCHDOG);
+    ASSERT_SILENT(m, "u 2");
+}
+
+/* ---- presets (D16, D18) ---- */
+
+static void test_a_start_consumes_the_preset(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_SILENT(m, "ms 1 10 0 5");
+    ASSERT_MOVE(m, "mt 1 0");
+    ASSERT_ERROR(m, "mt 1 0", "no preset");
+    ASSERT_SILENT(m, "ms 1 10 0 5");
+    ASSERT_MOVE(m, "mt 0 0");
+    ASSERT_ERROR(m, "mp 1 0", "no preset");
+    ASSERT_SILENT(m, "mt 0 0");
+}
+
+static void test_one_preset_serves_any_start_kind(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_SILENT(m, "ms 1 10 0 1");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mc 1");
+    assert_int_equal(mv->kind, DARAN_MOVE_TORQUE);
+    assert_true(mv->torque_nm == 10.0f);
+    ASSERT_ERROR(m, "mv 1", "no preset");
+}
+
+static void test_a_start_refused_by_state_keeps_the_preset(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_SILENT(m, "ms 1 10 0 5");
+    ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
+    ASSERT_ERROR(m, "mt 1 0", "estop active");
+    ASSERT_ERROR(m, "mt 0 0", "estop active");
+    ASSERT_ACTION(m, "sc 1", DARAN_ACTION_CLEAR_ERRORS);
+    ASSERT_ERROR(m, "mt 1 0", "motor idle");
+    (void)ASSERT_SET(m, "w axis1.requested_state 8", DARAN_PROP_REQUESTED_STATE);
+    const daran_move_t *mv = ASSERT_MOVE(m, "mt 1 0");
+    assert_true(mv->pos_deg == 10.0f);
+    assert_true(mv->rate == 5.0f);
+}
+
+static void test_a_start_refused_by_its_values_keeps_the_preset(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_SILENT(m, "ms 1 100 1 1");
+    ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
+    ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mt 1 0");
+    assert_true(mv->pos_deg == 100.0f);
+    ASSERT_SILENT(m, "ms 1 10 0 0");
+    ASSERT_ERROR(m, "mt 1 0", "value out of range");
+    mv = ASSERT_MOVE(m, "mp 1 0");
+    assert_true(mv->pos_deg == 10.0f);
+}
+
+static void test_start_without_preset_answers_by_id(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    static const char *const own[] = {"mt 1 0", "mq 1 1", "mp 1 0", "mv 1", "mc 1"};
+    static const char *const all[] = {"mt 0 0", "mq 0 1", "mp 0 0", "mv 0", "mc 0"};
+    for (size_t i = 0; i < 5; i++) {
+        ASSERT_ERROR(m, own[i], "no preset");
+        ASSERT_SILENT(m, all[i]);
+    }
+    /* whatever the state (D18) */
+    set_state(m, DARAN_FLAG_ESTOP, DARAN_STATE_IDLE);
+    for (size_t i = 0; i < 5; i++) {
+        ASSERT_ERROR(m, own[i], "estop active");
+        ASSERT_SILENT(m, all[i]);
+    }
+    set_state(m, 0, DARAN_STATE_IDLE);
+    ASSERT_ERROR(m, "mt 1 0", "motor idle");
+    ASSERT_SILENT(m, "mt 0 0");
+}
+
+static void test_preset_is_accepted_in_any_state(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    set_state(m, DARAN_FLAG_UNDERVOLTAGE, DARAN_STATE_IDLE);
+    ASSERT_SILENT(m, "ms 1 10 0 5");
+    set_state(m, 0, DARAN_STATE_CLOSED_LOOP);
+    ASSERT_MOVE(m, "mt 1 0");
+}
+
+/* ---- queries ---- */
+
+static void test_f_answers_position_and_velocity(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_POS_ESTIMATE].f32 = -45.5f;
+    m->props[DARAN_PROP_VEL_ESTIMATE].f32 = 12.25f;
+    assert_string_equal(ASSERT_QUERY(m, "f 1"), "-45.5 12.25\n");
+    char want[64];
+    mock_reply_line(want, sizeof want, "-45.5 12.25", true);
+    assert_string_equal(ASSERT_QUERY(m, "f 1 *87"), want);
+}
+
+static void test_g_answers_bus_voltage_and_current(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_VBUS_VOLTAGE].f32 = 23.5f;
+    m->props[DARAN_PROP_IQ_MEASURED].f32 = -1.25f;
+    assert_string_equal(ASSERT_QUERY(m, "g 1"), "23.5 -1.25\n");
+}
+
+static void test_i_answers_three_decimal_integers(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    assert_string_equal(ASSERT_QUERY(m, "i 1"), "10203 7 1234567890123\n");
+    m->props[DARAN_PROP_FW_VERSION].u32 = UINT32_MAX;
+    m->props[DARAN_PROP_HW_VERSION].u32 = 0;
+    m->props[DARAN_PROP_SERIAL_NUMBER].u64 = UINT64_MAX;
+    assert_string_equal(ASSERT_QUERY(m, "i 1"), "4294967295 0 18446744073709551615\n");
+    char want[80];
+    mock_reply_line(want, sizeof want, "4294967295 0 18446744073709551615", true);
+    char line[32];
+    assert_string_equal(ASSERT_QUERY(m, mock_with_checksum(line, sizeof line, "i 1")), want);
+}
+
+typedef struct e_case { uint32_t flags; const char *text; } e_case_t;
+
+static const e_case_t e_cases[] = {
+    {0, "0"},
+    {DARAN_FLAG_ESTOP, "1 estop"},
+    {DARAN_FLAG_ESTOP | DARAN_FLAG_WATCHDOG, "3 estop watchdog"},
+    {DARAN_FLAG_MOTOR_OVERTEMP, "4 motor_overtemp"},
+    {DARAN_FLAG_FET_OVERTEMP, "8 fet_overtemp"},
+    {DARAN_FLAG_UNDERVOLTAGE, "16 undervoltage"},
+    {DARAN_FLAG_NVM_CORRUPT, "32 nvm_corrupt"},
+    {0x3F, "63 estop watchdog motor_overtemp fet_overtemp undervoltage nvm_corrupt"},
+    {(1u << 8) | DARAN_FLAG_ESTOP, "257 estop"},
+    {1u << 31, "2147483648"},
+    {0xFFFFFFFFu, "4294967295 estop watchdog motor_overtemp fet_overtemp undervoltage nvm_corrupt"},
+};
+
+static void e_case_run(void **state)
+{
+    const e_case_t *c = *state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_AXIS_ERROR].u32 = c->flags;
+    char want[128], line[32];
+    mock_reply_line(want, sizeof want, c->text, false);
+    assert_string_equal(ASSERT_QUERY(m, "e 1"), want);
+    mock_reply_line(want, sizeof want, c->text, true);
+    assert_string_equal(ASSERT_QUERY(m, mock_with_checksum(line, sizeof line, "e 1")), want);
+}
+
+static const char *const help_words[] = {"t",  "q",  "p",  "v",  "c",  "d",  "ms", "mt", "mq",
+                                         "mp", "mv", "mc", "r",  "w",  "ss", "se", "sr", "sc",
+                                         "sz", "st", "h",  "f",  "g",  "i",  "e",  "u"};
+#define N_HELP (sizeof help_words / sizeof help_words[0])
+
+static void check_help(mock_t *m, bool checksum)
+{
+    char *p = m->out;
+    mock_check(m->n_writes == N_HELP, m, __FILE__, __LINE__, "expected %zu help lines, got %zu",
+               N_HELP, m->n_writes);
+    mock_check(m->n_calls == 0, m, __FILE__, __LINE__, "h has no effect");
+    for (size_t i = 0; i < N_HELP; i++) {
+        char *end = strchr(p, '\n');
+        assert_non_null(end);
+        *end = '\0';
+        size_t wl = strlen(help_words[i]);
+        mock_check(strncmp(p, help_words[i], wl) == 0 && (p[wl] == ' ' || p[wl] == '\0'), m,
+                   __FILE__, __LINE__, "help line %zu is \"%s\", expected word \"%s\"", i, p,
+                   help_words[i]);
+        mock_check(strncmp(p, "error", 5) != 0, m, __FILE__, __LINE__, "help, not an error");
+        if (checksum) {
+            char *star = strrchr(p, '*');
+            assert_non_null(star);
+            unsigned n = (unsigned)strtoul(star + 1, NULL, 10);
+            *star = '\0';
+            mock_check(star > p && star[-1] == ' ' && mock_xor(p) == n, m, __FILE__, __LINE__,
+                       "help line %zu: bad reply checksum", i);
+        }
+        p = end + 1;
+    }
+    assert_int_equal(*p, '\0');
+}
+
+static void test_h_answers_one_line_per_command_in_table_order(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_send_line(m, "h 1");
+    check_help(m, false);
+    mock_send_line(m, "h 0");
+    check_help(m, false);
+}
+
+static void test_h_lines_each_carry_a_checksum_when_requested(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    char line[32];
+    mock_send_line(m, mock_with_checksum(line, sizeof line, "h 1"));
+    check_help(m, true);
+}
+
+static void test_queries_for_another_drive_are_silent(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    static const char *const lines[] = {"f 2", "g 2", "i 2", "e 2", "h 2", "f 63"};
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++)
+        ASSERT_SILENT(m, lines[i]);
+}
+
+int main(void)
+{
+    static mock_suite_t s;
+#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    for (size_t i = 0; i < N_MOTIONS; i++) {
+        void *st = (void *)(uintptr_t)&motions[i];
+        mock_suite_add(&s, estop_case, st, "test_\"%s\"_in_estop_answers_estop_active",
+                       motions[i].line);
+        mock_suite_add(&s, fault_case, st, "test_\"%s\"_with_a_fault_flag_answers_motor_fault",
+                       motions[i].line);
+        mock_suite_add(&s, idle_case, st, "test_\"%s\"_while_idle_answers_motor_idle",
+                       motions[i].line);
+        mock_suite_add(&s, nvm_warning_case, st, "test_\"%s\"_runs_with_only_nvm_corrupt_set",
+                       motions[i].line);
+    }
+    ADD(test_estop_wins_over_every_other_flag);
+    ADD(test_commands_other_than_motion_work_in_estop);
+    ADD(test_after_estop_clear_keeps_the_drive_idle_until_closed_loop);
+    ADD(test_closed_loop_request_is_refused_while_a_flag_is_set);
+    ADD(test_closed_loop_request_checks_its_value_first);
+    ADD(test_accepted_motion_feeds_the_watchdog_after_its_move);
+    ADD(test_refused_motion_does_not_feed_the_watchdog);
+    ADD(test_u_feeds_the_watchdog_in_any_state);
+    ADD(test_a_start_consumes_the_preset);
+    ADD(test_one_preset_serves_any_start_kind);
+    ADD(test_a_start_refused_by_state_keeps_the_preset);
+    ADD(test_a_start_refused_by_its_values_keeps_the_preset);
+    ADD(test_start_without_preset_answers_by_id);
+    ADD(test_preset_is_accepted_in_any_state);
+    ADD(test_f_answers_position_and_velocity);
+    ADD(test_g_answers_bus_voltage_and_current);
+    ADD(test_i_answers_three_decimal_integers);
+    for (size_t i = 0; i < sizeof e_cases / sizeof e_cases[0]; i++)
+        mock_suite_add(&s, e_case_run, (void *)(uintptr_t)&e_cases[i],
+                       "test_e_with_flags_0x%X_answers_\"%s\"", (unsigned)e_cases[i].flags,
+                       e_cases[i].text);
+    ADD(test_h_answers_one_line_per_command_in_table_order);
+    ADD(test_h_lines_each_carry_a_checksum_when_requested);
+    ADD(test_queries_for_another_drive_are_silent);
+    return mock_suite_run(&s, "states_and_queries");
+}
