@@ -1,0 +1,107 @@
+# Install and export rules: `cmake --install` puts the public headers,
+# libdaran_ascii.a, the daran_ascii::daran_ascii CMake package and
+# daran_ascii.pc under the prefix, so a firmware project can take the library
+# by find_package(), by pkg-config, or (without installing) by add_subdirectory().
+include_guard(GLOBAL)
+
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+# A project that pulls daran-ascii in with add_subdirectory() usually does not
+# want our files in its own install tree.
+option(DARAN_INSTALL "Generate the install rules of daran-ascii" ${_daran_top_level})
+if(NOT DARAN_INSTALL)
+  return()
+endif()
+
+set(DARAN_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/daran_ascii"
+    CACHE STRING "Where the CMake package files go, relative to the prefix")
+mark_as_advanced(DARAN_INSTALL_CMAKEDIR)
+
+file(GLOB _daran_public_headers CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/include/*.h")
+
+# The user options header changes the layout of daran_drive_t, so a consumer
+# must compile against the very header the library was built with. It is
+# installed next to the public headers, and the installed target names it by
+# file name (found through the include directory) instead of by the path it
+# had on the build machine.
+set(_daran_config_header_name "")
+if(DARAN_CONFIG_HEADER)
+  set(_daran_config_header_path "${DARAN_CONFIG_HEADER}")
+  if(NOT IS_ABSOLUTE "${_daran_config_header_path}")
+    get_filename_component(_daran_config_header_path "${_daran_config_header_path}"
+                           ABSOLUTE BASE_DIR "${CMAKE_SOURCE_DIR}")
+  endif()
+  if(NOT EXISTS "${_daran_config_header_path}")
+    message(FATAL_ERROR "DARAN_CONFIG_HEADER: ${DARAN_CONFIG_HEADER} not found "
+                        "(give an absolute path, or one relative to ${CMAKE_SOURCE_DIR})")
+  endif()
+  get_filename_component(_daran_config_header_name "${_daran_config_header_path}" NAME)
+  foreach(_h IN LISTS _daran_public_headers)
+    get_filename_component(_hn "${_h}" NAME)
+    if(_hn STREQUAL _daran_config_header_name)
+      message(FATAL_ERROR "DARAN_CONFIG_HEADER: rename ${_daran_config_header_name}; "
+                          "the library installs a header of that name")
+    endif()
+  endforeach()
+  get_target_property(_daran_defs daran_ascii INTERFACE_COMPILE_DEFINITIONS)
+  list(TRANSFORM _daran_defs REPLACE "^DARAN_CONFIG_HEADER=.*$"
+       "$<BUILD_INTERFACE:DARAN_CONFIG_HEADER=${DARAN_CONFIG_HEADER}>;$<INSTALL_INTERFACE:DARAN_CONFIG_HEADER=${_daran_config_header_name}>")
+  set_property(TARGET daran_ascii PROPERTY INTERFACE_COMPILE_DEFINITIONS "${_daran_defs}")
+  install(FILES "${_daran_config_header_path}" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+endif()
+
+# Options given as plain -D flags are baked into the library but reach no
+# consumer of the installed package: its daran_drive_t would have another size.
+foreach(_flags IN ITEMS CMAKE_C_FLAGS CMAKE_C_FLAGS_${CMAKE_BUILD_TYPE})
+  if("${${_flags}}" MATCHES "-D *DARAN_[A-Z_]+")
+    message(WARNING "${_flags} sets ${CMAKE_MATCH_0}...: the installed package does not "
+                    "record it, so programs built against it would disagree with the "
+                    "library about daran_drive_t. Put the options in a header named by "
+                    "-DDARAN_CONFIG_HEADER=... instead.")
+  endif()
+endforeach()
+
+install(TARGETS daran_ascii EXPORT daran_asciiTargets
+  ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+  INCLUDES DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+install(FILES ${_daran_public_headers} DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+install(EXPORT daran_asciiTargets
+  NAMESPACE daran_ascii::
+  DESTINATION "${DARAN_INSTALL_CMAKEDIR}")
+
+configure_package_config_file(
+  "${CMAKE_CURRENT_LIST_DIR}/daran_asciiConfig.cmake.in"
+  "${PROJECT_BINARY_DIR}/daran_asciiConfig.cmake"
+  INSTALL_DESTINATION "${DARAN_INSTALL_CMAKEDIR}")
+# 0.x.y: SameMajorVersion accepts any 0.* for a request of 0.*; the version
+# file still refuses a library built for another pointer size (host vs MCU).
+write_basic_package_version_file(
+  "${PROJECT_BINARY_DIR}/daran_asciiConfigVersion.cmake"
+  VERSION "${PROJECT_VERSION}"
+  COMPATIBILITY SameMajorVersion)
+install(FILES
+  "${PROJECT_BINARY_DIR}/daran_asciiConfig.cmake"
+  "${PROJECT_BINARY_DIR}/daran_asciiConfigVersion.cmake"
+  DESTINATION "${DARAN_INSTALL_CMAKEDIR}")
+
+# pkg-config: the prefix is found from the .pc file's own place, so the tree
+# can be installed with --prefix or moved after installation.
+set(_daran_pc_prefix "${CMAKE_INSTALL_PREFIX}")
+if(NOT IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+  file(RELATIVE_PATH _daran_pc_up "/r/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/r")
+  string(REGEX REPLACE "/$" "" _daran_pc_up "${_daran_pc_up}")
+  set(_daran_pc_prefix "\${pcfiledir}/${_daran_pc_up}")
+endif()
+set(_daran_pc_cflags "")
+if(_daran_config_header_name)
+  set(_daran_pc_cflags " -DDARAN_CONFIG_HEADER=${_daran_config_header_name}")
+endif()
+set(_daran_pc_libs_private "")
+if(NOT CMAKE_CROSSCOMPILING AND DARAN_LIBM)
+  set(_daran_pc_libs_private "-lm")
+endif()
+configure_file("${CMAKE_CURRENT_LIST_DIR}/daran_ascii.pc.in"
+               "${PROJECT_BINARY_DIR}/daran_ascii.pc" @ONLY)
+install(FILES "${PROJECT_BINARY_DIR}/daran_ascii.pc"
+        DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
