@@ -1,50 +1,123 @@
 /* The command table: the only place that knows which commands exist, their
- * field counts, handlers and help text. */
+ * field counts, handlers and help text. One list, DARAN_COMMANDS, makes both
+ * the rows and the `h` text, so they cannot drift apart. */
 #include "internal.h"
 
-#if DARAN_ENABLE_HELP
-#define HELP(text) , text
-#else
-#define HELP(text)
-#endif
-
-const daran_command_t daran_commands[] = {
-    /* t first: it is the command a host streams at 1 kHz. */
-    {"t", 3, 5, 0, 0, daran_cmd_t HELP("id pos [vel] [bw]")},
-    {"q", 3, 5, 0, 0, daran_cmd_q HELP("id pos [vel] [acc]")},
-    {"p", 3, 5, 0, 0, daran_cmd_p HELP("id pos [vel_ff] [torque_ff]")},
-    {"v", 3, 5, 0, 0, daran_cmd_v HELP("id vel [param] [mode]")},
-    {"c", 3, 5, 0, 0, daran_cmd_c HELP("id torque [param] [mode]")},
-    {"d", 7, 7, 0, 0, daran_cmd_d HELP("id pdes vdes tff kp kd")},
-#if DARAN_ENABLE_MULTI_MOTOR
-    {"ms", 5, 5, 0, 0, daran_cmd_ms HELP("id p1 p2 p3")},
-    {"mt", 3, 3, 0, 0, daran_cmd_mt HELP("id rel")},
-    {"mq", 3, 3, 0, 0, daran_cmd_mq HELP("id rel")},
-    {"mp", 3, 3, 0, 0, daran_cmd_mp HELP("id rel")},
-    {"mv", 2, 2, 0, 0, daran_cmd_mv HELP("id")},
-    {"mc", 2, 2, 0, 0, daran_cmd_mc HELP("id")},
-#endif
-    {"r", 2, 3, DARAN_CMD_READ | DARAN_CMD_PATH, 0, daran_cmd_r HELP("path [id]")},
-    {"w", 3, 4, DARAN_CMD_PATH, 0, daran_cmd_w HELP("path value [id]")},
-    {"ss", 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, daran_cmd_action HELP("id")},
-    {"se", 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, daran_cmd_action HELP("id")},
-    {"sr", 2, 2, 0, DARAN_ACTION_REBOOT, daran_cmd_action HELP("id")},
-    {"sc", 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, daran_cmd_action HELP("id")},
-    {"sz", 2, 2, 0, DARAN_ACTION_SET_ZERO, daran_cmd_action HELP("id")},
-    {"st", 2, 2, 0, DARAN_ACTION_ESTOP, daran_cmd_action HELP("id")},
-#if DARAN_ENABLE_HELP
-    {"h", 2, 2, DARAN_CMD_READ, 0, daran_cmd_h HELP("id")},
-#endif
-    {"f", 2, 2, DARAN_CMD_READ, 0, daran_cmd_f HELP("id")},
-    {"g", 2, 2, DARAN_CMD_READ, 0, daran_cmd_g HELP("id")},
-    {"i", 2, 2, DARAN_CMD_READ, 0, daran_cmd_i HELP("id")},
-    {"e", 2, 2, DARAN_CMD_READ, 0, daran_cmd_e HELP("id")},
-    {"u", 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, daran_cmd_action HELP("id")},
+enum handler {
+    HANDLER_MOTION,
+    HANDLER_MS,
+    HANDLER_START,
+    HANDLER_R,
+    HANDLER_W,
+    HANDLER_ACTION,
+    HANDLER_H,
+    HANDLER_F,
+    HANDLER_G,
+    HANDLER_I,
+    HANDLER_E,
+    HANDLER_COUNT
 };
 
-#define COMMAND_COUNT (sizeof daran_commands / sizeof daran_commands[0])
+#define READ DARAN_CMD_READ
+#define PATH DARAN_CMD_PATH
+#define READ_PATH (DARAN_CMD_READ | DARAN_CMD_PATH)
 
-const uint8_t daran_command_count = (uint8_t)COMMAND_COUNT;
+/* X(word, min fields, max fields, flags, arg, handler, arguments for `h`).
+ * t first: it is the command a host streams at 1 kHz. */
+#define SINGLE_MOTION_COMMANDS(X)                                                     \
+    X("t", 3, 5, 0, DARAN_SHAPE_T, HANDLER_MOTION, "id pos [vel] [bw]")              \
+    X("q", 3, 5, 0, DARAN_SHAPE_Q, HANDLER_MOTION, "id pos [vel] [acc]")             \
+    X("p", 3, 5, 0, DARAN_SHAPE_P, HANDLER_MOTION, "id pos [vel_ff] [torque_ff]")    \
+    X("v", 3, 5, 0, DARAN_SHAPE_V, HANDLER_MOTION, "id vel [param] [mode]")          \
+    X("c", 3, 5, 0, DARAN_SHAPE_C, HANDLER_MOTION, "id torque [param] [mode]")       \
+    X("d", 7, 7, 0, DARAN_SHAPE_D, HANDLER_MOTION, "id pdes vdes tff kp kd")
+
+#if DARAN_ENABLE_MULTI_MOTOR
+#define MULTI_MOTION_COMMANDS(X)                                       \
+    X("ms", 5, 5, 0, 0, HANDLER_MS, "id p1 p2 p3")                     \
+    X("mt", 3, 3, 0, DARAN_SHAPE_T, HANDLER_START, "id rel")           \
+    X("mq", 3, 3, 0, DARAN_SHAPE_Q, HANDLER_START, "id rel")           \
+    X("mp", 3, 3, 0, DARAN_SHAPE_P, HANDLER_START, "id rel")           \
+    X("mv", 2, 2, 0, DARAN_SHAPE_V, HANDLER_START, "id")               \
+    X("mc", 2, 2, 0, DARAN_SHAPE_C, HANDLER_START, "id")
+#else
+#define MULTI_MOTION_COMMANDS(X)
+#endif
+
+#define PROPERTY_AND_SYSTEM_COMMANDS(X)                                      \
+    X("r", 2, 3, READ_PATH, 0, HANDLER_R, "path [id]")                       \
+    X("w", 3, 4, PATH, 0, HANDLER_W, "path value [id]")                      \
+    X("ss", 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, HANDLER_ACTION, "id")         \
+    X("se", 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, HANDLER_ACTION, "id")        \
+    X("sr", 2, 2, 0, DARAN_ACTION_REBOOT, HANDLER_ACTION, "id")              \
+    X("sc", 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, HANDLER_ACTION, "id")        \
+    X("sz", 2, 2, 0, DARAN_ACTION_SET_ZERO, HANDLER_ACTION, "id")            \
+    X("st", 2, 2, 0, DARAN_ACTION_ESTOP, HANDLER_ACTION, "id")
+
+#if DARAN_ENABLE_HELP
+#define HELP_COMMAND(X) X("h", 2, 2, READ, 0, HANDLER_H, "id")
+#else
+#define HELP_COMMAND(X)
+#endif
+
+#define QUERY_COMMANDS(X)                                                  \
+    X("f", 2, 2, READ, 0, HANDLER_F, "id")                                 \
+    X("g", 2, 2, READ, 0, HANDLER_G, "id")                                 \
+    X("i", 2, 2, READ, 0, HANDLER_I, "id")                                 \
+    X("e", 2, 2, READ, 0, HANDLER_E, "id")                                 \
+    X("u", 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, HANDLER_ACTION, "id")
+
+#define DARAN_COMMANDS(X)                                                  \
+    SINGLE_MOTION_COMMANDS(X) MULTI_MOTION_COMMANDS(X)                     \
+    PROPERTY_AND_SYSTEM_COMMANDS(X) HELP_COMMAND(X) QUERY_COMMANDS(X)
+
+#define COMMAND_ROW(word, min, max, flags, arg, handler, help) \
+    {word, (uint8_t)((min) << 4 | (max)), flags, (uint8_t)(arg), handler},
+static const daran_command_t commands[] = {DARAN_COMMANDS(COMMAND_ROW)};
+#undef COMMAND_ROW
+
+#define COMMAND_COUNT (sizeof commands / sizeof commands[0])
+
+#if DARAN_ENABLE_HELP
+/* Every command's help line, each ending in '\0', in table order. */
+#define HELP_LINE(word, min, max, flags, arg, handler, help) word " " help "\0"
+static const char help_text[] = DARAN_COMMANDS(HELP_LINE);
+#undef HELP_LINE
+
+static daran_result_t command_h(daran_drive_t *drive, const daran_request_t *request)
+{
+    (void)request;
+    const char *line = help_text;
+    for (size_t i = 0; i < COMMAND_COUNT; i++) {
+        daran_reply_begin(drive);
+        daran_reply_cstr(drive, line);
+        daran_reply_end(drive);
+        while (*line != '\0') {
+            line++;
+        }
+        line++;
+    }
+    return DARAN_OK;
+}
+#endif
+
+static daran_handler_fn const handlers[HANDLER_COUNT] = {
+    [HANDLER_MOTION] = daran_cmd_motion,
+#if DARAN_ENABLE_MULTI_MOTOR
+    [HANDLER_MS] = daran_cmd_ms,
+    [HANDLER_START] = daran_cmd_start,
+#endif
+    [HANDLER_R] = daran_cmd_r,
+    [HANDLER_W] = daran_cmd_w,
+    [HANDLER_ACTION] = daran_cmd_action,
+#if DARAN_ENABLE_HELP
+    [HANDLER_H] = command_h,
+#endif
+    [HANDLER_F] = daran_cmd_f,
+    [HANDLER_G] = daran_cmd_g,
+    [HANDLER_I] = daran_cmd_i,
+    [HANDLER_E] = daran_cmd_e,
+};
 
 static char lower(char c)
 {
@@ -59,9 +132,14 @@ const daran_command_t *daran_find_command(const daran_field_t *word)
     char first = lower(word->text[0]);
     char second = word->len == 2u ? lower(word->text[1]) : '\0';
     for (size_t i = 0; i < COMMAND_COUNT; i++) {
-        if (daran_commands[i].word[0] == first && daran_commands[i].word[1] == second) {
-            return &daran_commands[i];
+        if (commands[i].word[0] == first && commands[i].word[1] == second) {
+            return &commands[i];
         }
     }
     return NULL;
+}
+
+daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *request)
+{
+    return handlers[request->command->handler](drive, request);
 }

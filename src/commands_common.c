@@ -13,24 +13,6 @@ daran_result_t daran_field_f32(const daran_field_t *field, float *out)
     return daran_parse_f32(field->text, field->len, out);
 }
 
-daran_result_t daran_field_positive(const daran_field_t *field, float *out)
-{
-    daran_result_t result = daran_parse_f32(field->text, field->len, out);
-    if (result == DARAN_OK && !(*out > 0.0f)) {
-        result = DARAN_ERR_OUT_OF_RANGE;
-    }
-    return result;
-}
-
-daran_result_t daran_field_non_negative(const daran_field_t *field, float *out)
-{
-    daran_result_t result = daran_parse_f32(field->text, field->len, out);
-    if (result == DARAN_OK && !(*out >= 0.0f)) {
-        result = DARAN_ERR_OUT_OF_RANGE;
-    }
-    return result;
-}
-
 daran_result_t daran_field_mode(const daran_field_t *field, uint32_t allowed, uint32_t *out)
 {
     uint64_t mode;

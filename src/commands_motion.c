@@ -1,144 +1,156 @@
-/* Single-motor motion commands: t q p v c d. Each parses and checks every
- * value first, then the drive's state, then makes one HAL move. */
+/* Motion commands t q p v c d, and the shapes the multi-motor starts reuse.
+ * A shape says where each value of the line goes in the move and how it is
+ * checked; one function turns values into a move, so `mt` is exactly `t`,
+ * `mv` exactly `v`, and so on. Every value is checked before the drive's
+ * state, and the state before the one HAL move. */
 #include "internal.h"
 
-static daran_result_t run(daran_drive_t *drive, daran_result_t parsed, const daran_move_t *move)
+enum slot { SLOT_POS, SLOT_VEL, SLOT_TORQUE, SLOT_RATE, SLOT_KP, SLOT_KD, SLOT_PARAM, SLOT_MODE,
+            SLOT_IGNORED, SLOT_COUNT };
+enum check { CHECK_ANY, CHECK_POSITIVE, CHECK_NON_NEGATIVE, CHECK_MODE_VELOCITY, CHECK_MODE_TORQUE };
+
+#define VALUE(slot, check) (uint8_t)(((slot) << 4) | (check))
+#define SLOT_OF(value) ((value) >> 4)
+#define CHECK_OF(value) ((value) & 0x0Fu)
+
+typedef struct motion_shape {
+    uint8_t kind;      /* daran_move_kind_t */
+    uint8_t count;     /* values after the id */
+    uint8_t value[5];  /* VALUE(slot, check) */
+} motion_shape_t;
+
+static const motion_shape_t shapes[DARAN_SHAPE_COUNT] = {
+    [DARAN_SHAPE_T] = {DARAN_MOVE_FILTERED_POSITION, 3,
+                       {VALUE(SLOT_POS, CHECK_ANY), VALUE(SLOT_IGNORED, CHECK_ANY),
+                        VALUE(SLOT_RATE, CHECK_POSITIVE)}},
+    [DARAN_SHAPE_Q] = {DARAN_MOVE_TRAPEZOID, 3,
+                       {VALUE(SLOT_POS, CHECK_ANY), VALUE(SLOT_VEL, CHECK_POSITIVE),
+                        VALUE(SLOT_RATE, CHECK_POSITIVE)}},
+    [DARAN_SHAPE_P] = {DARAN_MOVE_PASSTHROUGH, 3,
+                       {VALUE(SLOT_POS, CHECK_ANY), VALUE(SLOT_VEL, CHECK_ANY),
+                        VALUE(SLOT_TORQUE, CHECK_ANY)}},
+    [DARAN_SHAPE_V] = {DARAN_MOVE_VELOCITY, 3,
+                       {VALUE(SLOT_VEL, CHECK_ANY), VALUE(SLOT_PARAM, CHECK_ANY),
+                        VALUE(SLOT_MODE, CHECK_MODE_VELOCITY)}},
+    [DARAN_SHAPE_C] = {DARAN_MOVE_TORQUE, 3,
+                       {VALUE(SLOT_TORQUE, CHECK_ANY), VALUE(SLOT_PARAM, CHECK_ANY),
+                        VALUE(SLOT_MODE, CHECK_MODE_TORQUE)}},
+    [DARAN_SHAPE_D] = {DARAN_MOVE_IMPEDANCE, 5,
+                       {VALUE(SLOT_POS, CHECK_ANY), VALUE(SLOT_VEL, CHECK_ANY),
+                        VALUE(SLOT_TORQUE, CHECK_ANY), VALUE(SLOT_KP, CHECK_NON_NEGATIVE),
+                        VALUE(SLOT_KD, CHECK_NON_NEGATIVE)}},
+};
+
+/* Modes as bit sets: bit m set = mode m allowed. Mode 2 of `c` is the vendor's
+ * own C libraries' name for the torque ramp (6). */
+static const uint8_t mode_sets[] = {
+    [CHECK_MODE_VELOCITY] = (1u << 1) | (1u << 2),
+    [CHECK_MODE_TORQUE] = (1u << 1) | (1u << 2) | (1u << 6),
+};
+
+static daran_result_t check_value(uint8_t check, float value)
 {
-    if (parsed != DARAN_OK) {
-        return parsed;
+    switch (check) {
+    case CHECK_POSITIVE:
+        return value > 0.0f ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+    case CHECK_NON_NEGATIVE:
+        return value >= 0.0f ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+    case CHECK_MODE_VELOCITY:
+    case CHECK_MODE_TORQUE:
+        for (uint8_t mode = 1; mode < 8u; mode++) {
+            if (((mode_sets[check] >> mode) & 1u) != 0u && value == (float)mode) {
+                return DARAN_OK;
+            }
+        }
+        return DARAN_ERR_INVALID_MODE;
+    default:
+        return DARAN_OK;
     }
-    daran_result_t result = daran_check_motion_allowed(drive);
-    return result != DARAN_OK ? result : daran_start_move(drive, move);
 }
 
-daran_result_t daran_velocity_move(float vel, float param, uint32_t mode, daran_move_t *move)
+/* A mode field is an exact integer (D12): "1.5" is an invalid value, a
+ * well-formed integer outside the set an invalid mode. */
+static daran_result_t parse_value(const daran_field_t *field, uint8_t check, float *out)
 {
-    move->vel_rpm = vel;
-    if (mode == 2u) {
-        move->kind = DARAN_MOVE_VELOCITY_RAMP;
-        move->rate = param;
-        return param > 0.0f ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+    if (check == CHECK_MODE_VELOCITY || check == CHECK_MODE_TORQUE) {
+        uint64_t mode;
+        daran_result_t result = daran_parse_u64(field->text, field->len, &mode);
+        if (result == DARAN_ERR_INVALID_VALUE) {
+            return result;
+        }
+        *out = (result == DARAN_OK && mode < 8u) ? (float)mode : -1.0f;
+    } else {
+        daran_result_t result = daran_parse_f32(field->text, field->len, out);
+        if (result != DARAN_OK) {
+            return result;
+        }
     }
-    move->kind = DARAN_MOVE_VELOCITY;
-    move->torque_nm = param;
+    return check_value(check, *out);
+}
+
+daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uint8_t count,
+                                daran_move_t *move)
+{
+    const motion_shape_t *shape = &shapes[shape_id];
+    float slot[SLOT_COUNT] = {0};
+    slot[SLOT_MODE] = 1.0f;
+    move->kind = (daran_move_kind_t)shape->kind;
+    move->given = 0;
+    for (uint8_t i = 0; i < count; i++) {
+        daran_result_t result = check_value(CHECK_OF(shape->value[i]), values[i]);
+        if (result != DARAN_OK) {
+            return result;
+        }
+        slot[SLOT_OF(shape->value[i])] = values[i];
+        if (SLOT_OF(shape->value[i]) == SLOT_VEL && shape->kind == DARAN_MOVE_TRAPEZOID) {
+            move->given |= DARAN_GIVEN_VEL;
+        }
+        if (SLOT_OF(shape->value[i]) == SLOT_RATE) {
+            move->given |= DARAN_GIVEN_RATE;
+        }
+    }
+
+    /* v and c: the mode says what the parameter is (D11: a ramp needs a rate > 0). */
+    if (shape->kind == DARAN_MOVE_VELOCITY && slot[SLOT_MODE] == 2.0f) {
+        move->kind = DARAN_MOVE_VELOCITY_RAMP;
+        slot[SLOT_RATE] = slot[SLOT_PARAM];
+    } else if (shape->kind == DARAN_MOVE_VELOCITY) {
+        slot[SLOT_TORQUE] = slot[SLOT_PARAM];
+    } else if (shape->kind == DARAN_MOVE_TORQUE && slot[SLOT_MODE] != 1.0f) {
+        move->kind = DARAN_MOVE_TORQUE_RAMP;
+        slot[SLOT_RATE] = slot[SLOT_PARAM];
+    }
+    if ((move->kind == DARAN_MOVE_VELOCITY_RAMP || move->kind == DARAN_MOVE_TORQUE_RAMP) &&
+        !(slot[SLOT_RATE] > 0.0f)) {
+        return DARAN_ERR_OUT_OF_RANGE;
+    }
+
+    move->pos_deg = slot[SLOT_POS];
+    move->vel_rpm = slot[SLOT_VEL];
+    move->torque_nm = slot[SLOT_TORQUE];
+    move->rate = slot[SLOT_RATE];
+    move->kp = slot[SLOT_KP];
+    move->kd = slot[SLOT_KD];
     return DARAN_OK;
 }
 
-daran_result_t daran_torque_move(float torque, float param, uint32_t mode, daran_move_t *move)
+daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *request)
 {
-    move->torque_nm = torque;
-    if (mode == 1u) {
-        move->kind = DARAN_MOVE_TORQUE;
-        return DARAN_OK;
-    }
-    /* Mode 2 is the vendor's own C libraries' name for the ramp (6). */
-    move->kind = DARAN_MOVE_TORQUE_RAMP;
-    move->rate = param;
-    return param > 0.0f ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
-}
-
-daran_result_t daran_cmd_t(daran_drive_t *drive, const daran_request_t *request)
-{
+    daran_shape_t shape_id = (daran_shape_t)request->command->arg;
+    const motion_shape_t *shape = &shapes[shape_id];
     const daran_fields_t *fields = request->fields;
-    daran_move_t move = {DARAN_MOVE_FILTERED_POSITION, 0, 0, 0, 0, 0, 0, 0};
-    float ignored_vel;
-    daran_result_t result = daran_field_f32(&fields->at[2], &move.pos_deg);
-    if (result == DARAN_OK && fields->count > 3u) {
-        result = daran_field_f32(&fields->at[3], &ignored_vel);
+    uint8_t count = (uint8_t)(fields->count - 2u);
+    float values[5];
+    for (uint8_t i = 0; i < count; i++) {
+        daran_result_t result = parse_value(&fields->at[2u + i], CHECK_OF(shape->value[i]), &values[i]);
+        if (result != DARAN_OK) {
+            return result;
+        }
     }
-    if (result == DARAN_OK && fields->count > 4u) {
-        result = daran_field_positive(&fields->at[4], &move.rate);
-        move.given = DARAN_GIVEN_RATE;
-    }
-    return run(drive, result, &move);
-}
-
-daran_result_t daran_cmd_q(daran_drive_t *drive, const daran_request_t *request)
-{
-    const daran_fields_t *fields = request->fields;
-    daran_move_t move = {DARAN_MOVE_TRAPEZOID, 0, 0, 0, 0, 0, 0, 0};
-    daran_result_t result = daran_field_f32(&fields->at[2], &move.pos_deg);
-    if (result == DARAN_OK && fields->count > 3u) {
-        result = daran_field_positive(&fields->at[3], &move.vel_rpm);
-        move.given |= DARAN_GIVEN_VEL;
-    }
-    if (result == DARAN_OK && fields->count > 4u) {
-        result = daran_field_positive(&fields->at[4], &move.rate);
-        move.given |= DARAN_GIVEN_RATE;
-    }
-    return run(drive, result, &move);
-}
-
-daran_result_t daran_cmd_p(daran_drive_t *drive, const daran_request_t *request)
-{
-    const daran_fields_t *fields = request->fields;
-    daran_move_t move = {DARAN_MOVE_PASSTHROUGH, 0, 0, 0, 0, 0, 0, 0};
-    daran_result_t result = daran_field_f32(&fields->at[2], &move.pos_deg);
-    if (result == DARAN_OK && fields->count > 3u) {
-        result = daran_field_f32(&fields->at[3], &move.vel_rpm);
-    }
-    if (result == DARAN_OK && fields->count > 4u) {
-        result = daran_field_f32(&fields->at[4], &move.torque_nm);
-    }
-    return run(drive, result, &move);
-}
-
-daran_result_t daran_cmd_v(daran_drive_t *drive, const daran_request_t *request)
-{
-    const daran_fields_t *fields = request->fields;
-    daran_move_t move = {DARAN_MOVE_VELOCITY, 0, 0, 0, 0, 0, 0, 0};
-    float vel;
-    float param = 0.0f;
-    uint32_t mode = 1;
-    daran_result_t result = daran_field_f32(&fields->at[2], &vel);
-    if (result == DARAN_OK && fields->count > 3u) {
-        result = daran_field_f32(&fields->at[3], &param);
-    }
-    if (result == DARAN_OK && fields->count > 4u) {
-        result = daran_field_mode(&fields->at[4], DARAN_MODES_VELOCITY, &mode);
-    }
+    daran_move_t move;
+    daran_result_t result = daran_shape_move(shape_id, values, count, &move);
     if (result == DARAN_OK) {
-        result = daran_velocity_move(vel, param, mode, &move);
+        result = daran_check_motion_allowed(drive);
     }
-    return run(drive, result, &move);
-}
-
-daran_result_t daran_cmd_c(daran_drive_t *drive, const daran_request_t *request)
-{
-    const daran_fields_t *fields = request->fields;
-    daran_move_t move = {DARAN_MOVE_TORQUE, 0, 0, 0, 0, 0, 0, 0};
-    float torque;
-    float param = 0.0f;
-    uint32_t mode = 1;
-    daran_result_t result = daran_field_f32(&fields->at[2], &torque);
-    if (result == DARAN_OK && fields->count > 3u) {
-        result = daran_field_f32(&fields->at[3], &param);
-    }
-    if (result == DARAN_OK && fields->count > 4u) {
-        result = daran_field_mode(&fields->at[4], DARAN_MODES_TORQUE, &mode);
-    }
-    if (result == DARAN_OK) {
-        result = daran_torque_move(torque, param, mode, &move);
-    }
-    return run(drive, result, &move);
-}
-
-daran_result_t daran_cmd_d(daran_drive_t *drive, const daran_request_t *request)
-{
-    const daran_fields_t *fields = request->fields;
-    daran_move_t move = {DARAN_MOVE_IMPEDANCE, 0, 0, 0, 0, 0, 0, 0};
-    daran_result_t result = daran_field_f32(&fields->at[2], &move.pos_deg);
-    if (result == DARAN_OK) {
-        result = daran_field_f32(&fields->at[3], &move.vel_rpm);
-    }
-    if (result == DARAN_OK) {
-        result = daran_field_f32(&fields->at[4], &move.torque_nm);
-    }
-    if (result == DARAN_OK) {
-        result = daran_field_non_negative(&fields->at[5], &move.kp);
-    }
-    if (result == DARAN_OK) {
-        result = daran_field_non_negative(&fields->at[6], &move.kd);
-    }
-    return run(drive, result, &move);
+    return result != DARAN_OK ? result : daran_start_move(drive, &move);
 }

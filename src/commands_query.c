@@ -78,19 +78,3 @@ daran_result_t daran_cmd_e(daran_drive_t *drive, const daran_request_t *request)
     daran_reply_end(drive);
     return DARAN_OK;
 }
-
-#if DARAN_ENABLE_HELP
-daran_result_t daran_cmd_h(daran_drive_t *drive, const daran_request_t *request)
-{
-    (void)request;
-    for (uint8_t i = 0; i < daran_command_count; i++) {
-        const daran_command_t *command = &daran_commands[i];
-        daran_reply_begin(drive);
-        daran_reply_cstr(drive, command->word);
-        daran_reply_space(drive);
-        daran_reply_cstr(drive, command->arguments);
-        daran_reply_end(drive);
-    }
-    return DARAN_OK;
-}
-#endif

@@ -80,19 +80,19 @@ static daran_result_t address_property(const daran_command_t *command,
     daran_field_t number;
     if (split_axis_path(&fields->at[1], &number, name)) {
         *scope = DARAN_SCOPE_AXIS;
-        *count_ok = fields->count == command->min_fields;
+        *count_ok = fields->count == DARAN_MIN_FIELDS(command);
         return daran_field_motor(&number, &request->motor);
     }
     *scope = DARAN_SCOPE_SYSTEM;
     *name = fields->at[1];
-    if (fields->count == command->min_fields) {
+    if (fields->count == DARAN_MIN_FIELDS(command)) {
         *count_ok = true;
         request->motor = 0;
         return DARAN_OK;
     }
-    if (fields->count == command->max_fields) {
+    if (fields->count == DARAN_MAX_FIELDS(command)) {
         *count_ok = true;
-        return daran_field_motor(&fields->at[command->max_fields - 1u], &request->motor);
+        return daran_field_motor(&fields->at[DARAN_MAX_FIELDS(command) - 1u], &request->motor);
     }
     return DARAN_ERR_INVALID_FORMAT;
 }
@@ -129,7 +129,7 @@ static daran_result_t dispatch(daran_drive_t *drive, const char *line, size_t li
         return DARAN_ERR_INVALID_FORMAT;
     } else {
         result = daran_field_motor(&fields.at[1], &request.motor);
-        count_ok = fields.count >= command->min_fields && fields.count <= command->max_fields;
+        count_ok = fields.count >= DARAN_MIN_FIELDS(command) && fields.count <= DARAN_MAX_FIELDS(command);
     }
     if (result != DARAN_OK) {
         return result;
@@ -160,7 +160,7 @@ static daran_result_t dispatch(daran_drive_t *drive, const char *line, size_t li
             return result;
         }
     }
-    return command->handler(drive, &request);
+    return daran_run_command(drive, &request);
 }
 
 daran_result_t daran_execute_line(daran_drive_t *drive, const char *line, size_t len)

@@ -40,17 +40,17 @@ typedef daran_result_t (*daran_handler_fn)(daran_drive_t *drive, const daran_req
 #define DARAN_CMD_READ 0x01u /* answered for id 0 and never forwarded */
 #define DARAN_CMD_PATH 0x02u /* the id comes from a property path (r, w) */
 
+/* 6 bytes a row: the handler is an index into a table of functions. */
 typedef struct daran_command {
-    char word[3];
-    uint8_t min_fields; /* command word included */
-    uint8_t max_fields;
+    char word[2];       /* lower case; word[1] is 0 for one-letter words */
+    uint8_t fields;     /* min << 4 | max, command word included */
     uint8_t flags;
-    uint8_t arg; /* handler-specific: the HAL action of a system command */
-    daran_handler_fn handler;
-#if DARAN_ENABLE_HELP
-    const char *arguments;
-#endif
+    uint8_t arg;        /* handler-specific: the shape of a motion command, the HAL action of a system one */
+    uint8_t handler;
 } daran_command_t;
+
+#define DARAN_MIN_FIELDS(command) ((command)->fields >> 4)
+#define DARAN_MAX_FIELDS(command) ((command)->fields & 0x0Fu)
 
 typedef enum daran_scope { DARAN_SCOPE_SYSTEM, DARAN_SCOPE_AXIS } daran_scope_t;
 typedef enum daran_access { DARAN_ACCESS_RO, DARAN_ACCESS_RW } daran_access_t;
@@ -85,8 +85,8 @@ bool daran_field_equals(const daran_field_t *field, const char *text, size_t len
 
 /* command_table.c */
 const daran_command_t *daran_find_command(const daran_field_t *word);
-extern const daran_command_t daran_commands[];
-extern const uint8_t daran_command_count;
+/* DARAN_OK from the command's handler, or its error. */
+daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *request);
 
 /* property_table.c */
 extern const daran_property_t daran_properties[DARAN_PROP_COUNT];
@@ -114,45 +114,43 @@ bool daran_framer_feed(daran_drive_t *drive, uint8_t byte, bool damaged);
 /* drive.c: a framed line whose length and characters are known good. */
 daran_result_t daran_execute_line(daran_drive_t *drive, const char *line, size_t len);
 
-/* values.c helpers shared by the handlers (commands_common.c) */
+/* commands_common.c: what every handler needs */
 daran_result_t daran_field_f32(const daran_field_t *field, float *out);
-daran_result_t daran_field_positive(const daran_field_t *field, float *out);
-daran_result_t daran_field_non_negative(const daran_field_t *field, float *out);
-/* Modes as a bit set: bit m set = mode m allowed (modes are below 32). */
-#define DARAN_MODES_VELOCITY ((1u << 1) | (1u << 2))
-#define DARAN_MODES_TORQUE ((1u << 1) | (1u << 2) | (1u << 6))
-#define DARAN_MODES_START ((1u << 0) | (1u << 1))
 /* An integer mode field: DARAN_ERR_INVALID_VALUE when malformed or not an
- * integer, DARAN_ERR_INVALID_MODE when an integer outside @p allowed. */
+ * integer, DARAN_ERR_INVALID_MODE when an integer whose bit is not set in
+ * @p allowed (bit m = mode m). */
 daran_result_t daran_field_mode(const daran_field_t *field, uint32_t allowed, uint32_t *out);
-/* v/mv and c/mc: the move for (target, param, mode), with the ramp check of D11. */
-daran_result_t daran_velocity_move(float vel, float param, uint32_t mode, daran_move_t *move);
-daran_result_t daran_torque_move(float torque, float param, uint32_t mode, daran_move_t *move);
 daran_result_t daran_field_motor(const daran_field_t *field, uint8_t *out);
 daran_result_t daran_get(daran_drive_t *drive, daran_prop_t prop, daran_value_t *out);
 /* The drive accepts motion: closed loop, no blocking flag. */
 daran_result_t daran_check_motion_allowed(daran_drive_t *drive);
-/* Hand a validated move to the HAL and feed the watchdog. */
+/* Hand a validated move to the HAL and feed the watchdog (D22). */
 daran_result_t daran_start_move(daran_drive_t *drive, const daran_move_t *move);
 bool daran_is_finite(float value);
 
-/* The handlers, one per command family. */
-daran_result_t daran_cmd_t(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_q(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_p(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_v(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_c(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_d(daran_drive_t *drive, const daran_request_t *request);
+/* commands_motion.c: the value layouts of t q p v c d, shared by the starts. */
+typedef enum daran_shape {
+    DARAN_SHAPE_T,
+    DARAN_SHAPE_Q,
+    DARAN_SHAPE_P,
+    DARAN_SHAPE_V,
+    DARAN_SHAPE_C,
+    DARAN_SHAPE_D,
+    DARAN_SHAPE_COUNT
+} daran_shape_t;
+/* Check @p count values (the line's, after the id, or a preset's) against a
+ * shape and build its move; the first failing value answers (D11). */
+daran_result_t daran_shape_move(daran_shape_t shape, const float *values, uint8_t count,
+                                daran_move_t *move);
+
+/* The handlers, one per command family; command->arg selects the shape or
+ * action. */
+daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_mt(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_mq(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_mp(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_mv(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_mc(daran_drive_t *drive, const daran_request_t *request);
+daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_action(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_h(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_f(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_g(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_i(daran_drive_t *drive, const daran_request_t *request);
