@@ -91,13 +91,9 @@ static void test_line_of_128_bytes_with_checksum_is_accepted(void **state)
     (void)state;
     mock_t *m = mock_new();
     char payload[DARAN_LINE_MAX + 1], line[DARAN_LINE_MAX + 16];
-    /* payload + "*NN" must total 128: pad so that the checksum has 2 or 3 digits */
-    for (size_t pad = DARAN_LINE_MAX - 6; pad > DARAN_LINE_MAX - 12; pad--) {
-        make_padded(payload, "t 1 10", pad, "");
-        snprintf(line, sizeof line, "%s*%u", payload, mock_xor(payload));
-        if (strlen(line) == DARAN_LINE_MAX)
-            break;
-    }
+    /* payload + "*NNN" (three digits, leading zeros allowed by D4) = 128 bytes */
+    make_padded(payload, "t 1 10", DARAN_LINE_MAX - 4, "");
+    snprintf(line, sizeof line, "%s*%03u", payload, mock_xor(payload));
     assert_int_equal(strlen(line), DARAN_LINE_MAX);
     const daran_move_t *mv = ASSERT_MOVE(m, line);
     assert_true(mv->pos_deg == 10.0f);
