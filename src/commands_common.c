@@ -37,16 +37,16 @@ daran_result_t daran_field_motor(const daran_field_t *field, uint8_t *out)
     return DARAN_OK;
 }
 
-static daran_result_t known(daran_result_t result)
+daran_result_t daran_from_hal(daran_result_t result)
 {
-    /* A HAL may return anything; what the core does not know is a fault (D26). */
-    return (unsigned)result < (unsigned)DARAN_RESULT_COUNT ? result : DARAN_ERR_MOTOR_FAULT;
+    /* A HAL may return anything; what is not a protocol error is a fault (D26). */
+    return (unsigned)result < (unsigned)DARAN_ERR_BAD_ARGUMENT ? result : DARAN_ERR_MOTOR_FAULT;
 }
 
 daran_result_t daran_get(daran_drive_t *drive, daran_prop_t prop, daran_value_t *out)
 {
     out->u64 = 0;
-    return known(drive->hal->get(drive->hal_ctx, prop, out));
+    return daran_from_hal(drive->hal->get(drive->hal_ctx, prop, out));
 }
 
 daran_result_t daran_check_motion_allowed(daran_drive_t *drive)
@@ -71,7 +71,7 @@ daran_result_t daran_check_motion_allowed(daran_drive_t *drive)
 
 daran_result_t daran_start_move(daran_drive_t *drive, const daran_move_t *move)
 {
-    daran_result_t result = known(drive->hal->move(drive->hal_ctx, move));
+    daran_result_t result = daran_from_hal(drive->hal->move(drive->hal_ctx, move));
     if (result == DARAN_OK) {
         /* The move is done; a feed that fails cannot undo it, and the drive's
          * own watchdog will say so if it matters (D22). */

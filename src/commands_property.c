@@ -123,6 +123,5 @@ daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)
             return result;
         }
     }
-    daran_result_t set = drive->hal->set(drive->hal_ctx, request->prop, value);
-    return (unsigned)set < (unsigned)DARAN_RESULT_COUNT ? set : DARAN_ERR_MOTOR_FAULT;
+    return daran_from_hal(drive->hal->set(drive->hal_ctx, request->prop, value));
 }

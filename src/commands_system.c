@@ -5,10 +5,7 @@
 daran_result_t daran_cmd_action(daran_drive_t *drive, const daran_request_t *request)
 {
     daran_action_t action = (daran_action_t)request->command->arg;
-    daran_result_t result = drive->hal->action(drive->hal_ctx, action);
-    if ((unsigned)result >= (unsigned)DARAN_RESULT_COUNT) {
-        result = DARAN_ERR_MOTOR_FAULT;
-    }
+    daran_result_t result = daran_from_hal(drive->hal->action(drive->hal_ctx, action));
     if (result == DARAN_OK && action == DARAN_ACTION_REBOOT) {
         drive->has_preset = 0; /* a reboot forgets what RAM held (D16) */
     }

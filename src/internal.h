@@ -122,6 +122,9 @@ daran_result_t daran_field_f32(const daran_field_t *field, float *out);
 daran_result_t daran_field_mode(const daran_field_t *field, uint32_t allowed, uint32_t *out);
 daran_result_t daran_field_motor(const daran_field_t *field, uint8_t *out);
 daran_result_t daran_get(daran_drive_t *drive, daran_prop_t prop, daran_value_t *out);
+/* What the core answers for a HAL's result: protocol errors as they are,
+ * anything else (DARAN_ERR_BAD_ARGUMENT, unknown values) `motor fault`. */
+daran_result_t daran_from_hal(daran_result_t result);
 /* The drive accepts motion: closed loop, no blocking flag. */
 daran_result_t daran_check_motion_allowed(daran_drive_t *drive);
 /* Hand a validated move to the HAL and feed the watchdog (D22). */
