@@ -11,7 +11,7 @@ daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request)
         return result;
     }
     daran_reply_begin(drive);
-    switch ((daran_prop_type_t)daran_properties[request->prop].type) {
+    switch (DARAN_PROPERTY_TYPE(daran_properties[request->prop])) {
     case DARAN_TYPE_F32:
         daran_reply_f32(drive, value.f32);
         break;
@@ -75,11 +75,11 @@ static bool float_in_range(daran_range_t range, float value)
     }
 }
 
-static daran_result_t parse_value(const daran_property_t *row, const daran_field_t *field,
+static daran_result_t parse_value(daran_property_t row, const daran_field_t *field,
                                   daran_value_t *value)
 {
-    daran_range_t range = (daran_range_t)row->range;
-    if (row->type == DARAN_TYPE_F32) {
+    daran_range_t range = DARAN_PROPERTY_RANGE(row);
+    if (DARAN_PROPERTY_TYPE(row) == DARAN_TYPE_F32) {
         daran_result_t result = daran_field_f32(field, &value->f32);
         if (result == DARAN_OK && !float_in_range(range, value->f32)) {
             result = DARAN_ERR_OUT_OF_RANGE;
@@ -91,7 +91,7 @@ static daran_result_t parse_value(const daran_property_t *row, const daran_field
     if (result != DARAN_OK) {
         return result;
     }
-    if (row->type == DARAN_TYPE_U64) {
+    if (DARAN_PROPERTY_TYPE(row) == DARAN_TYPE_U64) {
         value->u64 = integer;
     } else if (integer > UINT32_MAX) {
         return DARAN_ERR_OUT_OF_RANGE;
@@ -103,8 +103,8 @@ static daran_result_t parse_value(const daran_property_t *row, const daran_field
 
 daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)
 {
-    const daran_property_t *row = &daran_properties[request->prop];
-    if (row->access != DARAN_ACCESS_RW) {
+    daran_property_t row = daran_properties[request->prop];
+    if (DARAN_PROPERTY_ACCESS(row) != DARAN_ACCESS_RW) {
         return DARAN_ERR_READ_ONLY;
     }
     daran_value_t value;

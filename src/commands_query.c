@@ -17,7 +17,7 @@ static daran_result_t reply_properties(daran_drive_t *drive, const daran_prop_t 
         if (i > 0u) {
             daran_reply_space(drive);
         }
-        switch ((daran_prop_type_t)daran_properties[props[i]].type) {
+        switch (DARAN_PROPERTY_TYPE(daran_properties[props[i]])) {
         case DARAN_TYPE_F32:
             daran_reply_f32(drive, values[i].f32);
             break;

@@ -55,17 +55,15 @@ typedef struct daran_command {
 typedef enum daran_scope { DARAN_SCOPE_SYSTEM, DARAN_SCOPE_AXIS } daran_scope_t;
 typedef enum daran_access { DARAN_ACCESS_RO, DARAN_ACCESS_RW } daran_access_t;
 
-/* One row of the compiled property table, 4 bytes: the name lives in one
- * shared block of characters (no pointers, no NULs), the rest in bit fields.
- * The unit is documentation only and stays in DARAN_PROPERTY_LIST. */
-typedef struct daran_property {
-    unsigned name_offset : 16;
-    unsigned name_len : 8;
-    unsigned scope : 1;  /* daran_scope_t */
-    unsigned access : 1; /* daran_access_t */
-    unsigned type : 2;   /* daran_prop_type_t */
-    unsigned range : 4;  /* daran_range_t */
-} daran_property_t;
+/* One row of the compiled property table, one byte: what `r` and `w` need
+ * to know (access, type, range). Paths are found through
+ * src/property_index.h; the unit is documentation and stays in
+ * DARAN_PROPERTY_LIST. */
+typedef uint8_t daran_property_t;
+#define DARAN_PROPERTY_ROW(access, type, range) (uint8_t)((access) | (type) << 1 | (range) << 3)
+#define DARAN_PROPERTY_ACCESS(row) ((daran_access_t)((row) & 1u))
+#define DARAN_PROPERTY_TYPE(row) ((daran_prop_type_t)(((row) >> 1) & 3u))
+#define DARAN_PROPERTY_RANGE(row) ((daran_range_t)((row) >> 3))
 
 /* checksum.c */
 uint8_t daran_xor(const char *text, size_t len);
@@ -90,8 +88,6 @@ daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *re
 
 /* property_table.c */
 extern const daran_property_t daran_properties[DARAN_PROP_COUNT];
-/* The path of a property, without its "axisN." (not NUL-terminated). */
-const char *daran_property_name(daran_prop_t prop);
 /* DARAN_OK with *prop set, or DARAN_ERR_INVALID_PROPERTY. */
 daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t len,
                                    daran_prop_t *prop);

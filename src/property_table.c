@@ -1,13 +1,12 @@
-/* The property table, built from DARAN_PROPERTY_LIST, and its lookup.
- * Rows are sorted by (scope, path), so a path is found by binary search:
- * O(log n) comparisons, never a scan of the whole table.
+/* The property table: each property's attributes (from DARAN_PROPERTY_LIST)
+ * and the lookup of a path.
  *
- * The names are packed into one struct of char arrays without terminators,
- * and each row keeps a 16-bit offset into it: 4 bytes a row instead of a
- * pointer, a length and a padded struct. */
-#include <stddef.h>
-
+ * Paths are not stored whole. src/property_index.h (generated from the same
+ * list by tools/gen_property_index.py) holds every dot-separated segment once
+ * and each path as a key of segment numbers, so lookup is two binary
+ * searches: O(log segments) per segment, then O(log properties) for the key. */
 #include "internal.h"
+#include "property_index.h"
 
 #define SCOPE_SYSTEM DARAN_SCOPE_SYSTEM
 #define SCOPE_AXIS DARAN_SCOPE_AXIS
@@ -26,71 +25,73 @@
 #define RANGE_CAN_BAUD DARAN_RANGE_CAN_BAUD
 #define RANGE_AXIS_STATE DARAN_RANGE_AXIS_STATE
 
-typedef struct property_names {
-#define DARAN_NAME_FIELD_(id, path, scope, type, access, range, unit) char id[sizeof(path) - 1u];
-    DARAN_PROPERTY_LIST(DARAN_NAME_FIELD_)
-#undef DARAN_NAME_FIELD_
-} property_names_t;
-
-static const property_names_t names = {
-#define DARAN_NAME_INIT_(id, path, scope, type, access, range, unit) path,
-    DARAN_PROPERTY_LIST(DARAN_NAME_INIT_)
-#undef DARAN_NAME_INIT_
-};
-
 const daran_property_t daran_properties[DARAN_PROP_COUNT] = {
-#define DARAN_PROPERTY_ROW_(id, path, scope, type, access, range, unit)                    \
-    [DARAN_PROP_##id] = {offsetof(property_names_t, id), sizeof(path) - 1u, SCOPE_##scope, \
-                         ACCESS_##access, TYPE_##type, RANGE_##range},
+#define DARAN_PROPERTY_ROW_(id, path, scope, type, access, range, unit) \
+    [DARAN_PROP_##id] = DARAN_PROPERTY_ROW(ACCESS_##access, TYPE_##type, RANGE_##range),
     DARAN_PROPERTY_LIST(DARAN_PROPERTY_ROW_)
 #undef DARAN_PROPERTY_ROW_
 };
 
-/* The SYSTEM rows come first; this counts them at compile time. */
-#define IS_SYSTEM_SYSTEM 1
-#define IS_SYSTEM_AXIS 0
-enum {
-#define DARAN_COUNT_SYSTEM_(id, path, scope, type, access, range, unit) +IS_SYSTEM_##scope
-    SYSTEM_ROWS = 0 DARAN_PROPERTY_LIST(DARAN_COUNT_SYSTEM_)
-#undef DARAN_COUNT_SYSTEM_
-};
-
-const char *daran_property_name(daran_prop_t prop)
+/* The segment number (1-based) of text[0..len), or 0 when there is none. */
+static uint32_t find_segment(const char *text, size_t len)
 {
-    return (const char *)&names + daran_properties[prop].name_offset;
-}
-
-static int compare_path(daran_prop_t prop, const char *name, size_t len)
-{
-    const char *path = daran_property_name(prop);
-    size_t path_len = daran_properties[prop].name_len;
-    size_t common = path_len < len ? path_len : len;
-    for (size_t i = 0; i < common; i++) {
-        unsigned char a = (unsigned char)path[i];
-        unsigned char b = (unsigned char)name[i];
-        if (a != b) {
-            return a < b ? -1 : 1;
+    size_t low = 0;
+    size_t high = DARAN_SEGMENT_COUNT;
+    while (low < high) {
+        size_t mid = low + (high - low) / 2u;
+        size_t start = mid == 0u ? 0u : segment_end[mid - 1u];
+        size_t seg_len = (size_t)segment_end[mid] - start;
+        size_t common = seg_len < len ? seg_len : len;
+        int order = 0;
+        for (size_t i = 0; i < common && order == 0; i++) {
+            unsigned char a = (unsigned char)segment_text[start + i];
+            unsigned char b = (unsigned char)text[i];
+            order = a == b ? 0 : (a < b ? -1 : 1);
+        }
+        if (order == 0) {
+            order = seg_len == len ? 0 : (seg_len < len ? -1 : 1);
+        }
+        if (order == 0) {
+            return (uint32_t)(mid + 1u);
+        }
+        if (order < 0) {
+            low = mid + 1u;
+        } else {
+            high = mid;
         }
     }
-    if (path_len == len) {
-        return 0;
-    }
-    return path_len < len ? -1 : 1;
+    return 0;
 }
 
 daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t len,
                                    daran_prop_t *prop)
 {
-    size_t low = scope == DARAN_SCOPE_SYSTEM ? 0u : (size_t)SYSTEM_ROWS;
-    size_t high = scope == DARAN_SCOPE_SYSTEM ? (size_t)SYSTEM_ROWS : (size_t)DARAN_PROP_COUNT;
+    uint32_t key = scope == DARAN_SCOPE_AXIS ? 1u : 0u;
+    uint32_t segments = 0;
+    size_t start = 0;
+    for (size_t i = 0; i <= len; i++) {
+        if (i < len && name[i] != '.') {
+            continue;
+        }
+        uint32_t number = find_segment(name + start, i - start);
+        if (number == 0u || segments == DARAN_MAX_SEGMENTS) {
+            return DARAN_ERR_INVALID_PROPERTY;
+        }
+        key = (key << DARAN_SEGMENT_BITS) | number;
+        segments++;
+        start = i + 1u;
+    }
+    key <<= DARAN_SEGMENT_BITS * (DARAN_MAX_SEGMENTS - segments);
+
+    size_t low = 0;
+    size_t high = DARAN_KEY_COUNT;
     while (low < high) {
         size_t mid = low + (high - low) / 2u;
-        int order = compare_path((daran_prop_t)mid, name, len);
-        if (order == 0) {
-            *prop = (daran_prop_t)mid;
+        if (property_key[mid] == key) {
+            *prop = (daran_prop_t)property_of_key[mid];
             return DARAN_OK;
         }
-        if (order < 0) {
+        if (property_key[mid] < key) {
             low = mid + 1u;
         } else {
             high = mid;
