@@ -34,16 +34,3 @@ void daran_split_fields(const char *text, size_t len, daran_fields_t *out)
         out->count++;
     }
 }
-
-bool daran_field_equals(const daran_field_t *field, const char *text, size_t len)
-{
-    if (field->len != len) {
-        return false;
-    }
-    for (size_t i = 0; i < len; i++) {
-        if (field->text[i] != text[i]) {
-            return false;
-        }
-    }
-    return true;
-}

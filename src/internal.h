@@ -79,7 +79,6 @@ daran_result_t daran_checksum_split(const char *line, size_t len, size_t *payloa
 bool daran_is_blank(char c);
 bool daran_byte_allowed(uint8_t byte);
 void daran_split_fields(const char *text, size_t len, daran_fields_t *out);
-bool daran_field_equals(const daran_field_t *field, const char *text, size_t len);
 
 /* command_table.c */
 const daran_command_t *daran_find_command(const daran_field_t *word);
