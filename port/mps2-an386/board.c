@@ -1,0 +1,131 @@
+/* Board services of the MPS2 AN386 example: CMSDK APB UART0 (base 0x40004000,
+ * RX interrupt IRQ 0), SysTick, NVIC enables and the semihosting exit. */
+#include "board.h"
+
+#define REG32(addr) (*(volatile uint32_t *)(addr))
+
+/* CMSDK APB UART0 */
+#define UART0_BASE 0x40004000u
+#define UART_DATA REG32(UART0_BASE + 0x00u)
+#define UART_STATE REG32(UART0_BASE + 0x04u)
+#define UART_CTRL REG32(UART0_BASE + 0x08u)
+#define UART_INTSTATUS REG32(UART0_BASE + 0x0Cu) /* read: status, write 1: clear */
+#define UART_BAUDDIV REG32(UART0_BASE + 0x10u)
+
+#define UART_STATE_TX_FULL (1u << 0)
+#define UART_STATE_RX_OVERRUN (1u << 3)
+#define UART_CTRL_TX_EN (1u << 0)
+#define UART_CTRL_RX_EN (1u << 1)
+#define UART_CTRL_RX_INT_EN (1u << 3)
+#define UART_CTRL_RX_OVR_INT_EN (1u << 5)
+#define UART_INT_RX (1u << 1)
+#define UART_INT_RX_OVERRUN (1u << 3)
+
+#define UART0_RX_IRQ 0u
+
+/* System control space */
+#define NVIC_ISER0 REG32(0xE000E100u)
+#define NVIC_IPR_BASE 0xE000E400u
+#define SYST_CSR REG32(0xE000E010u)
+#define SYST_RVR REG32(0xE000E014u)
+#define SYST_CVR REG32(0xE000E018u)
+#define SCB_SHPR3 REG32(0xE000ED20u)
+
+void board_uart0_init(uint32_t baud)
+{
+    UART_CTRL = 0u;
+    /* The CMSDK UART refuses divisors below 16. */
+    UART_BAUDDIV = BOARD_SYSCLK_HZ / baud >= 16u ? BOARD_SYSCLK_HZ / baud : 16u;
+    UART_INTSTATUS = UART_INT_RX | UART_INT_RX_OVERRUN;
+    UART_CTRL = UART_CTRL_TX_EN | UART_CTRL_RX_EN | UART_CTRL_RX_INT_EN;
+    /* The byte-input ISR outranks SysTick: a byte must be taken before the
+     * next one arrives, a tick may wait (priority 0 is the highest). */
+    *(volatile uint8_t *)(NVIC_IPR_BASE + UART0_RX_IRQ) = 0x00u;
+    NVIC_ISER0 = 1u << UART0_RX_IRQ;
+}
+
+uint8_t board_uart0_take_rx(void)
+{
+    uint8_t byte = (uint8_t)UART_DATA;
+    UART_INTSTATUS = UART_INT_RX;
+    if ((UART_STATE & UART_STATE_RX_OVERRUN) != 0u) {
+        UART_STATE = UART_STATE_RX_OVERRUN; /* write 1 to clear */
+    }
+    return byte;
+}
+
+void board_uart0_write(const char *bytes, size_t len)
+{
+    size_t i;
+    for (i = 0; i < len; i++) {
+        while ((UART_STATE & UART_STATE_TX_FULL) != 0u) {
+        }
+        UART_DATA = (uint8_t)bytes[i];
+    }
+}
+
+void board_systick_start(uint32_t hz)
+{
+    SYST_CSR = 0u;
+    SYST_RVR = BOARD_SYSCLK_HZ / hz - 1u;
+    SYST_CVR = 0u;
+    /* SysTick (exception 15) below the UART: priority 0x80. */
+    SCB_SHPR3 = (SCB_SHPR3 & 0x00FFFFFFu) | (0x80u << 24);
+    SYST_CSR = 7u; /* core clock, interrupt, enable */
+}
+
+void board_wait_for_interrupt(void)
+{
+    __asm volatile("wfi" ::: "memory");
+}
+
+uint32_t board_irq_save(void)
+{
+    uint32_t primask;
+    __asm volatile("mrs %0, primask\n\tcpsid i" : "=r"(primask)::"memory");
+    return primask;
+}
+
+void board_irq_restore(uint32_t primask)
+{
+    __asm volatile("msr primask, %0" ::"r"(primask) : "memory");
+}
+
+#if defined(DARAN_FW_SEMIHOSTING) && DARAN_FW_SEMIHOSTING
+/* Arm semihosting: operation in r0, argument block in r1, BKPT 0xAB on
+ * M-profile. QEMU needs -semihosting-config enable=on,target=native. */
+static uint32_t semihost(uint32_t op, const void *arg)
+{
+    register uint32_t r0 __asm("r0") = op;
+    register const void *r1 __asm("r1") = arg;
+    __asm volatile("bkpt 0xab" : "+r"(r0) : "r"(r1) : "memory");
+    return r0;
+}
+
+#define SYS_EXIT_EXTENDED 0x20u
+#define ADP_STOPPED_APPLICATION_EXIT 0x20026u
+
+void board_exit(int code)
+{
+    uint32_t block[2];
+    block[0] = ADP_STOPPED_APPLICATION_EXIT;
+    block[1] = (uint32_t)code;
+    (void)semihost(SYS_EXIT_EXTENDED, block);
+    for (;;) {
+    }
+}
+#else
+void board_exit(int code)
+{
+    (void)code;
+    (void)board_irq_save();
+    for (;;) {
+        __asm volatile("wfi");
+    }
+}
+#endif
+
+void board_fatal(int code)
+{
+    board_exit(code);
+}

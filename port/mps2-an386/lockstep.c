@@ -1,0 +1,161 @@
+/* Lock-step test mode of the example firmware (daran-fw-lockstep.elf only):
+ * time stands still unless the test driver says, as in daran-sim, so that
+ * the firmware's replies to a transcript can be compared byte for byte with
+ * the host simulator's.
+ *
+ * The test driver (tests/target/run_transcript.py) sends the transcript's
+ * protocol lines unchanged and turns each daran-sim directive into one of
+ * these lines, which never reach the core:
+ *
+ *   !t N            run N control ticks (the driver rounds SECONDS x rate
+ *                   as daran-sim does)
+ *   !p ID           power-cycle when ID is 0 or the drive's id
+ *   !f ID KIND      fault: o overtemp, u undervoltage, n nvm-corrupt
+ *   !l ID BITS      external load torque, float32 bits in hex
+ *   !x              finish: answer nothing more and exit QEMU (status 0)
+ *
+ * The RX ISR spots a '!' at the start of a line, keeps the line here and
+ * masks its own interrupt until the main loop has processed every byte
+ * queued before the directive and run it: the UART keeps the next byte
+ * (QEMU holds the rest), so order is kept exactly. */
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "board.h"
+#include "fw.h"
+
+#define NVIC_ISER0 (*(volatile uint32_t *)0xE000E100u)
+#define NVIC_ICER0 (*(volatile uint32_t *)0xE000E180u)
+#define UART0_RX_IRQ_BIT (1u << 0)
+
+#define DIRECTIVE_MAX 40u
+
+static bool at_line_start = true;
+static bool in_directive;
+static char directive[DIRECTIVE_MAX];
+static uint32_t directive_len;
+static volatile bool directive_ready;
+
+bool daran_fw_lockstep_take(uint8_t byte)
+{
+    if (at_line_start && byte == (uint8_t)'!') {
+        in_directive = true;
+        directive_len = 0u;
+    }
+    at_line_start = byte == (uint8_t)'\n';
+    if (!in_directive) {
+        return false;
+    }
+    if (byte == (uint8_t)'\n') {
+        in_directive = false;
+        directive_ready = true;
+        NVIC_ICER0 = UART0_RX_IRQ_BIT;
+    } else if (directive_len < DIRECTIVE_MAX) {
+        directive[directive_len++] = (char)byte;
+    }
+    return true;
+}
+
+static const char *skip_blanks(const char *p, const char *end)
+{
+    while (p < end && (*p == ' ' || *p == '\t' || *p == '\r')) {
+        p++;
+    }
+    return p;
+}
+
+/* Unsigned number in base 10 or 16; *p moves past it. */
+static uint32_t parse_uint(const char **p, const char *end, uint32_t base)
+{
+    uint32_t v = 0u;
+    while (*p < end) {
+        char c = **p;
+        uint32_t digit;
+        if (c >= '0' && c <= '9') {
+            digit = (uint32_t)(c - '0');
+        } else if (base == 16u && c >= 'a' && c <= 'f') {
+            digit = (uint32_t)(c - 'a') + 10u;
+        } else {
+            break;
+        }
+        v = v * base + digit;
+        (*p)++;
+    }
+    return v;
+}
+
+static bool addressed_here(uint32_t id)
+{
+    return id == 0u || id == daran_sim_drive_id(&daran_fw_plant);
+}
+
+static void run_directive(const char *p, const char *end)
+{
+    char op;
+    uint32_t id;
+    p = skip_blanks(p + 1, end); /* past '!' */
+    if (p == end) {
+        return;
+    }
+    op = *p++;
+    p = skip_blanks(p, end);
+    switch (op) {
+    case 't': {
+        uint32_t n = parse_uint(&p, end, 10u);
+        while (n-- > 0u) {
+            daran_sim_model_tick(&daran_fw_plant.model);
+        }
+        break;
+    }
+    case 'p':
+        id = parse_uint(&p, end, 10u);
+        if (addressed_here(id)) {
+            daran_sim_drive_power_on(&daran_fw_plant);
+            daran_fw_start_drive();
+        }
+        break;
+    case 'f':
+        id = parse_uint(&p, end, 10u);
+        p = skip_blanks(p, end);
+        if (addressed_here(id) && p < end) {
+            if (*p == 'o') {
+                daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_OVERTEMP);
+            } else if (*p == 'u') {
+                daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_UNDERVOLTAGE);
+            } else if (*p == 'n') {
+                (void)daran_sim_drive_corrupt_nvm(&daran_fw_plant);
+            }
+        }
+        break;
+    case 'l': {
+        union {
+            uint32_t u;
+            float f;
+        } load;
+        id = parse_uint(&p, end, 10u);
+        p = skip_blanks(p, end);
+        load.u = parse_uint(&p, end, 16u);
+        if (addressed_here(id)) {
+            daran_fw_plant.model.ext_torque_nm = load.f;
+        }
+        break;
+    }
+    case 'x':
+        board_exit(0);
+    default:
+        break;
+    }
+}
+
+bool daran_fw_lockstep_run(void)
+{
+    if (!directive_ready) {
+        return false;
+    }
+    /* Lines that arrived before the directive come first. */
+    (void)daran_poll(&daran_fw_drive);
+    run_directive(directive, directive + directive_len);
+    directive_ready = false;
+    NVIC_ISER0 = UART0_RX_IRQ_BIT;
+    return true;
+}

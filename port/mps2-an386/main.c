@@ -1,0 +1,111 @@
+/* Example drive firmware for the MPS2 AN386 board (Cortex-M4F), runnable on
+ * QEMU's mps2-an386 machine: the protocol core on UART0, the simulated motor
+ * of port/sim as the plant behind the HAL, SysTick as the control tick.
+ *
+ *   UART0 RX interrupt --byte--> daran_rx_byte()      (producer, ISR)
+ *   main loop ----------------> daran_poll()          (consumer)
+ *   daran_poll() --replies----> polled UART0 TX
+ *   SysTick ------------------> one model tick per period, run by the loop
+ *
+ * Built twice: daran-fw.elf runs in real time; daran-fw-lockstep.elf (the
+ * transcript tests) has no SysTick and takes `!` directive lines from the
+ * UART instead (lockstep.c), so that time only moves when the test says. */
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "board.h"
+#include "daran_drive.h"
+#include "fw.h"
+#include "sim_drive.h"
+
+#ifndef DARAN_FW_TICK_HZ
+#define DARAN_FW_TICK_HZ 1000u
+#endif
+#ifndef DARAN_FW_BAUD
+#define DARAN_FW_BAUD 115200u
+#endif
+
+daran_sim_drive_t daran_fw_plant;
+daran_drive_t daran_fw_drive;
+
+/* SysTick counts periods; the main loop runs the model for each. Two
+ * counters with one writer each need no lock. */
+static volatile uint32_t ticks_raised;
+static uint32_t ticks_run;
+/* Set by the RX ISR when it queued a byte, cleared before each poll: the
+ * main loop may only sleep when nothing arrived since. */
+static volatile bool rx_seen;
+
+static void reply_to_uart(void *ctx, const char *line, size_t len)
+{
+    (void)ctx;
+    board_uart0_write(line, len);
+}
+
+void daran_fw_start_drive(void)
+{
+    /* Fails only for a NULL pointer or HAL member: a build error, really. */
+    if (daran_init(&daran_fw_drive, &daran_sim_hal, &daran_fw_plant, reply_to_uart, NULL) !=
+        DARAN_OK) {
+        board_fatal(5);
+    }
+}
+
+void daran_fw_uart0_rx_isr(void)
+{
+    uint8_t byte = board_uart0_take_rx();
+    rx_seen = true;
+#if DARAN_FW_LOCKSTEP
+    if (daran_fw_lockstep_take(byte)) {
+        return;
+    }
+#endif
+    /* A full ring loses the byte; the core answers that line
+     * `line too long` (D3), which is all a drive can do. */
+    (void)daran_rx_byte(&daran_fw_drive, byte);
+}
+
+void daran_fw_systick_isr(void)
+{
+    ticks_raised = ticks_raised + 1u;
+}
+
+static bool run_due_ticks(void)
+{
+    bool ran = false;
+    while (ticks_run != ticks_raised) {
+        daran_sim_model_tick(&daran_fw_plant.model);
+        ticks_run++;
+        ran = true;
+    }
+    return ran;
+}
+
+int main(void)
+{
+    daran_sim_drive_init(&daran_fw_plant, 0u, DARAN_FW_TICK_HZ);
+    daran_fw_start_drive();
+    board_uart0_init(DARAN_FW_BAUD);
+#if !DARAN_FW_LOCKSTEP
+    board_systick_start(DARAN_FW_TICK_HZ);
+#endif
+    for (;;) {
+        bool busy = run_due_ticks();
+        rx_seen = false;
+        busy = daran_poll(&daran_fw_drive) > 0u || busy;
+#if DARAN_FW_LOCKSTEP
+        busy = daran_fw_lockstep_run() || busy;
+#endif
+        if (!busy) {
+            /* Sleep until the next byte or tick. Interrupts are masked
+             * around the last check so none slips in between it and the
+             * WFI (a pending interrupt still ends the WFI). */
+            uint32_t primask = board_irq_save();
+            if (ticks_run == ticks_raised && !rx_seen) {
+                board_wait_for_interrupt();
+            }
+            board_irq_restore(primask);
+        }
+    }
+}
