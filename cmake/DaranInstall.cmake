@@ -63,8 +63,7 @@ foreach(_flags IN ITEMS CMAKE_C_FLAGS CMAKE_C_FLAGS_${CMAKE_BUILD_TYPE})
 endforeach()
 
 install(TARGETS daran_ascii EXPORT daran_asciiTargets
-  ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
-  INCLUDES DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+  ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(FILES ${_daran_public_headers} DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 install(EXPORT daran_asciiTargets
   NAMESPACE daran_ascii::
