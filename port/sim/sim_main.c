@@ -196,29 +196,40 @@ static void sink_pty(void *ctx, uint32_t id, const char *bytes, size_t len)
     write_all(app.pty_fd, bytes, len);
 }
 
+typedef struct collect_ctx {
+    daran_sim_sink_fn sink;
+    uint32_t ids[DARAN_SIM_MAX_DRIVES];
+    uint32_t n;
+} collect_ctx_t;
+
+static void sink_recording(void *ctx, uint32_t id, const char *bytes, size_t len)
+{
+    collect_ctx_t *c = ctx;
+    if (c->n < DARAN_SIM_MAX_DRIVES) {
+        c->ids[c->n++] = id;
+    }
+    c->sink(NULL, id, bytes, len);
+}
+
+/* Hand the replies out in id order; report a collision on stderr. */
 static void collect(daran_sim_sink_fn sink, const char *what, size_t what_len)
 {
-    uint32_t answered;
-    uint32_t ids[DARAN_SIM_MAX_DRIVES];
-    uint32_t n = 0u;
+    collect_ctx_t c;
     uint32_t i;
-    for (i = 0; i < app.bus.count; i++) {
-        if (app.bus.node[i].out_len > 0u) {
-            ids[n++] = daran_sim_drive_id(&app.bus.node[i].sim);
-        }
+    c.sink = sink;
+    c.n = 0u;
+    if (daran_sim_bus_collect(&app.bus, sink_recording, &c) < 2u) {
+        return;
     }
-    answered = daran_sim_bus_collect(&app.bus, sink, NULL);
-    if (answered >= 2u) {
-        fprintf(stderr, "daran-sim: collision: %u drives answered", answered);
-        if (what != NULL) {
-            fprintf(stderr, " `%.*s`", (int)what_len, what);
-        }
-        fputs(" (ids", stderr);
-        for (i = 0; i < n; i++) {
-            fprintf(stderr, " %u", ids[i]);
-        }
-        fputs(")\n", stderr);
+    fprintf(stderr, "daran-sim: collision: %u drives answered", c.n);
+    if (what != NULL) {
+        fprintf(stderr, " `%.*s`", (int)what_len, what);
     }
+    fputs(" (ids", stderr);
+    for (i = 0; i < c.n; i++) {
+        fprintf(stderr, " %u", c.ids[i]);
+    }
+    fputs(")\n", stderr);
 }
 
 /* ---- directives ---- */

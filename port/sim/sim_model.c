@@ -272,7 +272,7 @@ void daran_sim_model_set_zero(daran_sim_model_t *m)
     m->zero_offset_deg = m->raw_pos_deg;
     m->input_pos -= shift;
     m->pos_sp -= shift;
-    m->filt_pos -= shift;
+    m->filt_ref -= shift;
     m->trap_start -= shift;
     m->trap_target -= shift;
 }
@@ -312,6 +312,12 @@ static void trap_plan(daran_sim_model_t *m, float target)
     }
     m->trap_vmax = vmax;
     m->trap_total = 2.0f * m->trap_ta + m->trap_tc;
+    /* A plan a float rounding longer than a whole number of ticks (an `mq`
+     * of exactly 2 s computes to 2.0000002 s) still ends on that tick. */
+    {
+        float n = ceilf(m->trap_total * (float)m->tick_hz - 1e-3f);
+        m->trap_end_tick = n < 4.0e9f ? (uint32_t)n : UINT32_MAX;
+    }
     m->trap_ticks = 0u;
     m->trajectory_done = dist == 0.0f;
 }
@@ -330,7 +336,8 @@ static bool is_position_mode(daran_sim_mode_t mode)
 static void enter_position_mode(daran_sim_model_t *m, daran_sim_mode_t mode)
 {
     if (mode == DARAN_SIM_MODE_FILTER && m->mode != DARAN_SIM_MODE_FILTER) {
-        m->filt_pos = m->pos_sp;
+        m->filt_ref = m->pos_sp;
+        m->filt_err = 0.0f;
         m->filt_vel = is_position_mode(m->mode) ? m->vel_sp * DEG_S_PER_RPM : 0.0f;
     }
     if (m->mode == DARAN_SIM_MODE_TORQUE || m->mode == DARAN_SIM_MODE_TORQUE_RAMP ||
@@ -429,18 +436,21 @@ daran_result_t daran_sim_model_move(daran_sim_model_t *m, const daran_move_t *mv
 /* ---- one control tick ---- */
 
 /* Exact step of the critically damped second-order filter x'' = w^2 (u - x)
- * - 2 w x' over dt: stable for any bandwidth and tick rate. */
+ * - 2 w x' over dt: stable for any bandwidth and tick rate. The state is
+ * kept as an offset from the target so that it settles on the target to the
+ * last bit instead of stalling a few ulps short. */
 static void filter_step(daran_sim_model_t *m, float target, float *acc_out)
 {
     float w = cfgf(m, DARAN_PROP_INPUT_FILTER_BANDWIDTH);
     float t = m->dt;
-    float e0 = m->filt_pos - target;
+    float e0 = m->filt_err + (m->filt_ref - target);
     float v0 = m->filt_vel;
     float k = expf(-w * t);
     float c = v0 + w * e0;
     float e = (e0 + c * t) * k;
     float v = (v0 - w * c * t) * k;
-    m->filt_pos = target + e;
+    m->filt_ref = target;
+    m->filt_err = e;
     m->filt_vel = v;
     *acc_out = -w * w * e - 2.0f * w * v;
 }
@@ -457,7 +467,7 @@ static void trap_eval(daran_sim_model_t *m, float *acc_out)
     float s = signf(m->trap_target - m->trap_start);
     float a = m->trap_acc;
     float ta = m->trap_ta;
-    if (t >= m->trap_total || m->trajectory_done) {
+    if (m->trap_ticks >= m->trap_end_tick || m->trajectory_done) {
         m->pos_sp = m->trap_target;
         m->vel_sp = 0.0f;
         *acc_out = 0.0f;
@@ -592,7 +602,7 @@ static void control(daran_sim_model_t *m)
     switch (m->mode) {
     case DARAN_SIM_MODE_FILTER:
         filter_step(m, limit_pos(m, m->input_pos), &acc);
-        m->pos_sp = m->filt_pos;
+        m->pos_sp = m->filt_ref + m->filt_err;
         m->vel_sp = m->filt_vel / DEG_S_PER_RPM;
         break;
     case DARAN_SIM_MODE_TRAPEZOID:

@@ -92,8 +92,9 @@ typedef struct daran_sim_model {
     float kp;                 /* d: Nm/deg */
     float kd;                 /* d: Nm/(r/min) */
 
-    /* input filter (t): position deg, velocity deg/s */
-    float filt_pos;
+    /* input filter (t): setpoint = filt_ref + filt_err (deg), velocity deg/s */
+    float filt_ref;
+    float filt_err;
     float filt_vel;
 
     /* trapezoid (q, mq): deg, deg/s, deg/s^2, s */
@@ -105,6 +106,7 @@ typedef struct daran_sim_model {
     float trap_tc;
     float trap_total;
     uint32_t trap_ticks;
+    uint32_t trap_end_tick;   /* the tick the plan ends on */
     bool trajectory_done;
     float trap_vel_rpm;       /* current `q` cruise setting, r/min (D20) */
     float trap_acc_rpms;      /* current `q` accel setting, (r/min)/s (D20) */

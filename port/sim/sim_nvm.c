@@ -10,7 +10,8 @@
  *               order), then the zero offset
  * A save first clears the target slot's magic, then writes header and
  * payload, then the magic: until that last byte lands the slot is not
- * committed and the other slot still holds the previous image. */
+ * committed and the other slot still holds the previous image. A damaged
+ * image is never kept next to a new one: boot would distrust both. */
 #include "sim_nvm.h"
 
 #include <math.h>
@@ -264,6 +265,15 @@ bool daran_sim_nvm_save(const daran_sim_storage_t *st, const daran_sim_model_t *
     put_u32(slot + 12, image_crc(slot, len));
     put_u32(slot, MAGIC);
 
+    if (newest < 0) {
+        /* No intact image: the other slot may hold a damaged one that would
+         * keep flagging every boot. It is garbage; retire it first. */
+        uint32_t seq_other;
+        if (read_slot(st, 1u - target, scratch, &seq_other) == SLOT_DAMAGED &&
+            !st->write(st->ctx, (1u - target) * DARAN_SIM_NVM_SLOT_SIZE, zero4, 4u)) {
+            return false;
+        }
+    }
     return st->write(st->ctx, base, zero4, 4u) &&
            st->write(st->ctx, base + 4u, slot + 4, HEADER_SIZE - 4u + len) &&
            st->write(st->ctx, base, slot, 4u);

@@ -156,10 +156,17 @@ static void test_corrupted_memory_boots_defaults_with_a_warning_flag(void **stat
     save_with_gain(33.0f);
     assert_true(daran_sim_nvm_corrupt(&st));
     assert_true(loaded_gain(DARAN_SIM_NVM_DAMAGED) == 20.0f);
-    /* a new save repairs it */
+    /* one new save repairs it */
     save_with_gain(34.0f);
+    assert_true(loaded_gain(DARAN_SIM_NVM_LOADED) == 34.0f);
     save_with_gain(35.0f);
     assert_true(loaded_gain(DARAN_SIM_NVM_LOADED) == 35.0f);
+    /* corrupting blank memory damages both slots; one save repairs that too */
+    daran_sim_ram_storage_init(&ram, &st);
+    assert_true(daran_sim_nvm_corrupt(&st));
+    assert_true(loaded_gain(DARAN_SIM_NVM_DAMAGED) == 20.0f);
+    save_with_gain(36.0f);
+    assert_true(loaded_gain(DARAN_SIM_NVM_LOADED) == 36.0f);
 }
 
 static void test_a_flipped_byte_anywhere_in_an_image_is_found(void **state)
