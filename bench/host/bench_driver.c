@@ -1,0 +1,207 @@
+/* Replays a recorded request stream through daran-ascii or the baseline
+ * yardstick, for callgrind to count (see run_all.sh) or to print every HAL
+ * call and reply (--trace) so compare_traces.py can check both parsers do the
+ * same thing.
+ *
+ *   bench_driver MODE [--trace] [--repeat N] (STREAM | --line TEXT)
+ *   MODE: ours       daran_process_line() per line
+ *         ours-poll  daran_rx_write() + daran_poll() per line (the byte path)
+ *         baseline   baseline_process_line() per line
+ *         none       everything but the parser: reading, splitting, looping
+ *         lookup-ours / lookup-baseline  only the property lookup of TEXT,
+ *                    an axis path without "axisN." (or "sys:" + a system path)
+ *
+ * The stream is read and split before the first line is processed, so a
+ * callgrind run limited to the parser's entry point counts the parser alone
+ * (plus the trivial HAL and reply sink it calls). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "baseline.h"
+#include "bench_hal.h"
+#include "daran_drive.h"
+#include "internal.h"
+
+typedef struct sink {
+    FILE *trace;
+    unsigned long bytes;
+    const unsigned long *line;
+} sink_t;
+
+static void sink_write(void *ctx, const char *text, size_t len)
+{
+    sink_t *sink = ctx;
+    sink->bytes += len;
+    if (sink->trace != NULL) {
+        fprintf(sink->trace, "%lu reply %.*s\n", *sink->line, (int)(len > 0 ? len - 1 : 0), text);
+    }
+}
+
+static char *read_all(const char *path, size_t *size)
+{
+    FILE *file = fopen(path, "rb");
+    if (file == NULL) {
+        perror(path);
+        exit(2);
+    }
+    fseek(file, 0, SEEK_END);
+    long length = ftell(file);
+    fseek(file, 0, SEEK_SET);
+    char *text = malloc((size_t)length + 1);
+    if (text == NULL || fread(text, 1, (size_t)length, file) != (size_t)length) {
+        fprintf(stderr, "%s: read failed\n", path);
+        exit(2);
+    }
+    fclose(file);
+    text[length] = '\0';
+    *size = (size_t)length;
+    return text;
+}
+
+typedef struct line {
+    const char *text;
+    size_t len;
+} line_t;
+
+/* Split at '\n' in place; each line becomes NUL-terminated too (the
+ * baseline needs C strings; daran-ascii takes the length). */
+static line_t *split_lines(char *text, size_t size, size_t *count)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < size; i++) {
+        n += text[i] == '\n';
+    }
+    line_t *lines = malloc((n + 1) * sizeof *lines);
+    size_t k = 0;
+    char *start = text;
+    for (size_t i = 0; i < size; i++) {
+        if (text[i] == '\n') {
+            text[i] = '\0';
+            lines[k].text = start;
+            lines[k].len = (size_t)(&text[i] - start);
+            k++;
+            start = &text[i + 1];
+        }
+    }
+    *count = k;
+    return lines;
+}
+
+static int usage(void)
+{
+    fprintf(stderr, "usage: bench_driver ours|ours-poll|baseline|none|lookup-ours|lookup-baseline "
+                    "[--trace] [--repeat N] (STREAM | --line TEXT)\n");
+    return 2;
+}
+
+static unsigned long lookups(const char *mode, const char *name, unsigned long repeat)
+{
+    int system = strncmp(name, "sys:", 4) == 0;
+    const char *path = system ? name + 4 : name;
+    unsigned long found = 0;
+    for (unsigned long i = 0; i < repeat; i++) {
+        if (strcmp(mode, "lookup-ours") == 0) {
+            daran_prop_t prop;
+            found += daran_find_property(system ? DARAN_SCOPE_SYSTEM : DARAN_SCOPE_AXIS, path,
+                                         strlen(path), &prop) == DARAN_OK;
+        } else {
+            found += baseline_find_property(system ? 0 : 1, path) != DARAN_PROP_COUNT;
+        }
+    }
+    return found;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 3) {
+        return usage();
+    }
+    const char *mode = argv[1];
+    const char *stream = NULL;
+    const char *single = NULL;
+    unsigned long repeat = 1;
+    int trace = 0;
+    for (int i = 2; i < argc; i++) {
+        if (strcmp(argv[i], "--trace") == 0) {
+            trace = 1;
+        } else if (strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) {
+            repeat = strtoul(argv[++i], NULL, 10);
+        } else if (strcmp(argv[i], "--line") == 0 && i + 1 < argc) {
+            single = argv[++i];
+        } else {
+            stream = argv[i];
+        }
+    }
+    if ((stream == NULL) == (single == NULL)) {
+        return usage();
+    }
+    if (strncmp(mode, "lookup-", 7) == 0) {
+        if (single == NULL) {
+            return usage();
+        }
+        unsigned long found = lookups(mode, single, repeat);
+        printf("%lu of %lu found\n", found, repeat);
+        return found == repeat ? 0 : 1;
+    }
+
+    size_t size;
+    char *text;
+    if (stream != NULL) {
+        text = read_all(stream, &size);
+    } else {
+        size = strlen(single) + 1;
+        text = malloc(size + 1);
+        memcpy(text, single, size - 1);
+        text[size - 1] = '\n';
+        text[size] = '\0';
+    }
+    size_t count;
+    line_t *lines = split_lines(text, size, &count);
+
+    unsigned long current = 0;
+    sink_t sink = {trace ? stdout : NULL, 0, &current};
+    bench_hal_state_t hal_state;
+    bench_hal_reset(&hal_state, trace ? stdout : NULL);
+    static daran_drive_t drive;
+    static baseline_t baseline;
+    if (daran_init(&drive, &bench_hal, &hal_state, sink_write, &sink) != DARAN_OK) {
+        return 2;
+    }
+    baseline_init(&baseline, &bench_hal, &hal_state, sink_write, &sink);
+
+    unsigned long errors = 0;
+    for (unsigned long r = 0; r < repeat; r++) {
+        for (size_t i = 0; i < count; i++) {
+            current = (unsigned long)i + 1;
+            hal_state.line = current;
+            if (strcmp(mode, "ours") == 0) {
+                errors += daran_process_line(&drive, lines[i].text, lines[i].len) != DARAN_OK;
+            } else if (strcmp(mode, "baseline") == 0) {
+                errors += baseline_process_line(&baseline, lines[i].text) != DARAN_OK;
+            } else if (strcmp(mode, "ours-poll") == 0) {
+                /* The line and its '\n' through the ring, in pieces the ring can hold. */
+                const char *p = lines[i].text;
+                size_t left = lines[i].len + 1;
+                char *end = (char *)lines[i].text + lines[i].len;
+                *end = '\n';
+                while (left > 0) {
+                    size_t queued = daran_rx_write(&drive, p, left);
+                    p += queued;
+                    left -= queued;
+                    (void)daran_poll(&drive);
+                }
+                *end = '\0';
+            } else if (strcmp(mode, "none") != 0) {
+                return usage();
+            }
+        }
+    }
+    if (!trace) {
+        printf("%s: %lu lines x %lu, %lu answered with an error, %lu reply bytes\n", mode,
+               (unsigned long)count, repeat, errors, sink.bytes);
+    }
+    free(lines);
+    free(text);
+    return 0;
+}
