@@ -282,7 +282,7 @@ int main(void)
     memcpy(long_line, "t 1 10", 6);
     long_line[DARAN_LINE_MAX + 10] = '\0';
     memset(long_bad_line, ' ', DARAN_LINE_MAX + 10);
-    memcpy(long_bad_line, "x\x01 1 *zz", 9);
+    memcpy(long_bad_line, "x\x01 1 *zz", 8);
     long_bad_line[DARAN_LINE_MAX + 10] = '\0';
     for (size_t i = 0; i < sizeof phrase_cases / sizeof phrase_cases[0]; i++)
         mock_suite_add(&s, phrase_case_run, (void *)(uintptr_t)&phrase_cases[i],

@@ -163,7 +163,7 @@ typedef struct mode_case {
 } mode_case_t;
 
 static const mode_case_t mode_cases[] = {
-    {"v 1 20 0 2.0", NULL, DARAN_MOVE_VELOCITY_RAMP},
+    {"v 1 20 3 2.0", NULL, DARAN_MOVE_VELOCITY_RAMP},
     {"v 1 20 0 1.0", NULL, DARAN_MOVE_VELOCITY},
     {"v 1 20 3 1e0", NULL, DARAN_MOVE_VELOCITY},
     {"v 1 20 3 +2", NULL, DARAN_MOVE_VELOCITY_RAMP},
