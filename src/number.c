@@ -63,6 +63,11 @@ typedef struct {
     const char *mant; /* first mantissa character */
     size_t int_len;   /* digits before the point */
     size_t total;     /* digits of the mantissa, point excluded */
+    size_t z;         /* index of the first non-zero digit */
+    size_t end;       /* index after the last non-zero digit; 0: all zero */
+    size_t w_end;     /* index after the last non-zero digit in the window */
+    uint64_t window;  /* the 19 digits from z (or fewer, if the text ends) */
+    uint64_t w;       /* digits [z, w_end): the window without trailing zeros */
     int32_t exp10;    /* explicit exponent, saturated */
     int negative;
 } number_scan_t;
@@ -120,13 +125,41 @@ static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
     return p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
 }
 
-static size_t count_digits(const char *t, size_t i, size_t len)
+/* A run of digits from t[i]: counts them and keeps the significant window.
+ * Works on locals: stores through s could alias the text and cost reloads. */
+static size_t scan_digits(const char *t, size_t i, size_t len, number_scan_t *s)
 {
-    size_t start = i;
-    while (i < len && is_digit(t[i])) {
-        i++;
+    size_t idx = s->total, z = s->z, end = s->end, w_end = s->w_end;
+    uint64_t window = s->window, w = s->w;
+    for (; i < len; i++, idx++) {
+        uint32_t d = (uint32_t)(unsigned char)t[i] - (uint32_t)'0';
+        if (d > 9u) {
+            break;
+        }
+        if (!end) {
+            if (!d) {
+                continue; /* a leading zero */
+            }
+            z = idx;
+        }
+        if (idx - z < 19u) {
+            window = window * 10u + d;
+            if (d) {
+                w = window;
+                w_end = idx + 1u;
+            }
+        }
+        if (d) {
+            end = idx + 1u;
+        }
     }
-    return i - start;
+    s->total = idx;
+    s->z = z;
+    s->end = end;
+    s->w_end = w_end;
+    s->window = window;
+    s->w = w;
+    return i;
 }
 
 /* The grammar [+-]?(digits[.digits*]|.digits)([eE][+-]?digits)?, all of it. */
@@ -135,19 +168,16 @@ static int number_scan(const char *t, size_t len, number_scan_t *s)
     size_t i = 0;
     int32_t e = 0;
     int eneg = 0;
-    s->negative = 0;
+    memset(s, 0, sizeof *s);
     if (i < len && (t[i] == '+' || t[i] == '-')) {
         s->negative = t[i] == '-';
         i++;
     }
     s->mant = t + i;
-    s->int_len = count_digits(t, i, len);
-    s->total = s->int_len;
-    i += s->int_len;
+    i = scan_digits(t, i, len, s);
+    s->int_len = s->total;
     if (i < len && t[i] == '.') {
-        size_t n = count_digits(t, i + 1, len);
-        s->total += n;
-        i += 1 + n;
+        i = scan_digits(t, i + 1, len, s);
     }
     if (s->total == 0) {
         return 0;
@@ -253,12 +283,12 @@ static int big_cmp(const number_big_t *a, const number_big_t *b)
 
 /* The exact decision between lo and lo + 1: compare the decimal (digits from
  * index z) with the halfway point between the two floats, in big integers. */
-static uint32_t big_decide(const number_scan_t *s, size_t z, uint32_t lo)
+static uint32_t big_decide(const number_scan_t *s, uint32_t lo)
 {
     number_big_t x, y;
     uint32_t exf = lo >> 23, frac = lo & 0x7FFFFFu, chunk = 0, scale = 1;
     int32_t f, e, c;
-    size_t i, take = s->total - z;
+    size_t i, z = s->z, take = s->total - z;
     int sticky = 0;
     if (take > DARAN_BIG_DIGITS) {
         take = DARAN_BIG_DIGITS;
@@ -299,9 +329,9 @@ static uint32_t big_decide(const number_scan_t *s, size_t z, uint32_t lo)
     return lo;
 }
 
-/* |value| = w * 10^q (w the first 19 significant digits, truncated set when
- * a later digit is non-zero) to float32 bits. */
-static uint32_t decimal_to_bits(const number_scan_t *s, size_t z, uint64_t w, int32_t q, int truncated)
+/* |value| = w * 10^q to float32 bits. w holds up to 19 significant digits;
+ * truncated: a later digit is non-zero, and then w has all 19 (w >= 10^18). */
+static uint32_t decimal_to_bits(const number_scan_t *s, uint64_t w, int32_t q, int truncated)
 {
     static const float pow10f[11] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
     uint64_t hi, lo;
@@ -335,35 +365,25 @@ static uint32_t decimal_to_bits(const number_scan_t *s, size_t z, uint64_t w, in
     if (hi <= UINT64_MAX - d && round_bits(hi + d, 0, e) == bits) {
         return bits;
     }
-    return big_decide(s, z, bits);
+    return big_decide(s, bits);
 }
 
 daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
 {
     number_scan_t s;
-    size_t z = 0, take, i;
-    uint64_t w = 0;
     uint32_t bits = 0;
-    int truncated = 0;
     if ((text == NULL && len != 0) || out == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
     if (!number_scan(text, len, &s)) {
         return DARAN_ERR_INVALID_VALUE;
     }
-    while (z < s.total && digit_at(&s, z) == 0) {
-        z++;
-    }
-    if (z < s.total) {
-        take = s.total - z < 19 ? s.total - z : 19;
-        for (i = 0; i < take; i++) {
-            w = w * 10u + digit_at(&s, z + i);
-        }
-        for (i = z + take; i < s.total && !truncated; i++) {
-            truncated = digit_at(&s, i) != 0;
-        }
-        bits = decimal_to_bits(&s, z, w,
-                               saturate(s.int_len) - saturate(z) - (int32_t)take + s.exp10, truncated);
+    if (s.end) {
+        /* Truncated: keep all 19 window digits so w >= 10^18 (see decimal_to_bits). */
+        int truncated = s.end > s.w_end;
+        uint64_t w = truncated ? s.window : s.w;
+        size_t w_end = truncated ? s.z + 19u : s.w_end;
+        bits = decimal_to_bits(&s, w, saturate(s.int_len) - saturate(w_end) + s.exp10, truncated);
         if (bits >= DARAN_F32_INF) {
             return DARAN_ERR_OUT_OF_RANGE;
         }
@@ -376,37 +396,38 @@ daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
 daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out)
 {
     number_scan_t s;
-    size_t z = 0, end, i;
     uint64_t v = 0;
-    int32_t e;
+    int32_t e, i;
     if ((text == NULL && len != 0) || out == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
     if (!number_scan(text, len, &s)) {
         return DARAN_ERR_INVALID_VALUE;
     }
-    while (z < s.total && digit_at(&s, z) == 0) {
-        z++;
-    }
-    end = s.total;
-    while (end > z && digit_at(&s, end - 1) == 0) {
-        end--;
-    }
-    if (z < end) {
+    if (s.end) {
         /* value = digits[z, end) * 10^e */
-        e = saturate(s.int_len) - saturate(end) + s.exp10;
+        e = saturate(s.int_len) - saturate(s.end) + s.exp10;
         if (e < 0) {
             return DARAN_ERR_INVALID_VALUE; /* a non-zero digit after the point */
         }
-        if (s.negative || end - z > 20 || (int32_t)(end - z) + e > 20) {
+        if (s.negative || s.end - s.z > 20u || (int32_t)(s.end - s.z) + e > 20) {
             return DARAN_ERR_OUT_OF_RANGE;
         }
-        for (i = z; i < end + (size_t)e; i++) {
-            uint32_t d = i < end ? digit_at(&s, i) : 0u;
-            if (v > UINT64_C(1844674407370955161) || (v == UINT64_C(1844674407370955161) && d > 5u)) {
+        if (s.end == s.w_end) {
+            v = s.w;
+        } else { /* 20 digits, e == 0: the last one may overflow */
+            v = s.window;
+            if (v > UINT64_C(1844674407370955161) ||
+                (v == UINT64_C(1844674407370955161) && digit_at(&s, s.end - 1u) > 5u)) {
                 return DARAN_ERR_OUT_OF_RANGE;
             }
-            v = v * 10u + d;
+            v = v * 10u + digit_at(&s, s.end - 1u);
+        }
+        for (i = 0; i < e; i++) {
+            if (v > UINT64_C(1844674407370955161)) {
+                return DARAN_ERR_OUT_OF_RANGE;
+            }
+            v *= 10u;
         }
     }
     *out = v;
