@@ -4,7 +4,16 @@
  * functions, no heap; the one big scratch is ~120 bytes in the rare slow path. */
 #include "number.h"
 
+#include <float.h>
 #include <string.h>
+
+/* The fast path needs float operations rounded once, to float (not wider, as
+ * on x87, and not reassociated, as under -ffast-math); elsewhere all is integer. */
+#if FLT_EVAL_METHOD == 0 && !defined(__FAST_MATH__)
+#define DARAN_NUM_FAST_PATH 1
+#else
+#define DARAN_NUM_FAST_PATH 0
+#endif
 
 #define DARAN_F32_INF 0x7F800000u
 /* Digit counts and exponents saturate here: far beyond anything that changes a
@@ -338,7 +347,7 @@ static uint32_t decimal_to_bits(const number_scan_t *s, uint64_t w, int32_t q, i
     uint32_t bits, d;
     unsigned lz;
     int32_t e;
-    if (!truncated && w <= (UINT64_C(1) << 24) && q >= -10 && q <= 10) {
+    if (DARAN_NUM_FAST_PATH && !truncated && w <= (UINT64_C(1) << 24) && q >= -10 && q <= 10) {
         /* Both operands exact in float32: one IEEE operation rounds correctly. */
         float f = (float)(uint32_t)w;
         f = q < 0 ? f / pow10f[-q] : f * pow10f[q];
