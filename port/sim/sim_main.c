@@ -38,7 +38,8 @@ static const char usage_text[] =
     "Options:\n"
     "  --drives N         N drives on the line, ids 1..N (default 1, at most 16)\n"
     "  --nvm DIR          keep each drive's non-volatile memory in DIR/drive-K.nvm\n"
-    "                     (K = 1..N), so a saved config survives a restart\n"
+    "                     (K = 1..N), so a saved config survives a restart; the\n"
+    "                     shaft angles are kept in DIR/drive-K.shaft\n"
     "  --tick-hz HZ       control tick rate, 1..100000 (default 1000)\n"
     "  --trace FILE.csv   write time_s and, per drive K, pos_deg_K, vel_rpm_K,\n"
     "                     torque_nm_K (torque setpoint) and state_K at every tick\n"
@@ -511,6 +512,49 @@ static int run_pty(void)
 
 /* ---- setup ---- */
 
+/* With --nvm the shaft angles persist too (DIR/drive-K.shaft): the shaft
+ * does not turn while the program is not running, so a zero set with `sz`
+ * and saved still reads 0 after a restart. */
+static void shaft_file(char *path, size_t size, const char *dir, uint32_t index)
+{
+    snprintf(path, size, "%s/drive-%u.shaft", dir, index + 1u);
+}
+
+static void load_shafts(const char *dir)
+{
+    uint32_t i;
+    for (i = 0; i < app.bus.count; i++) {
+        char path[4096];
+        FILE *f;
+        float angle;
+        shaft_file(path, sizeof path, dir, i);
+        f = fopen(path, "r");
+        if (f == NULL) {
+            continue;
+        }
+        if (fscanf(f, "%f", &angle) == 1 && isfinite(angle)) {
+            app.bus.node[i].sim.model.raw_pos_deg = angle;
+            daran_sim_bus_power_cycle(&app.bus, i);
+        }
+        fclose(f);
+    }
+}
+
+static void save_shafts(const char *dir)
+{
+    uint32_t i;
+    for (i = 0; i < app.bus.count; i++) {
+        char path[4096];
+        FILE *f;
+        shaft_file(path, sizeof path, dir, i);
+        f = fopen(path, "w");
+        if (f != NULL) {
+            fprintf(f, "%.9g\n", (double)app.bus.node[i].sim.model.raw_pos_deg);
+            fclose(f);
+        }
+    }
+}
+
 static int open_nvm(const char *dir)
 {
     uint32_t i;
@@ -620,8 +664,11 @@ int main(int argc, char **argv)
     for (i = 0; i < DARAN_SIM_MAX_DRIVES; i++) {
         app.files[i].fd = -1;
     }
-    if (nvm_dir != NULL && (rc = open_nvm(nvm_dir)) != 0) {
-        return rc;
+    if (nvm_dir != NULL) {
+        if ((rc = open_nvm(nvm_dir)) != 0) {
+            return rc;
+        }
+        load_shafts(nvm_dir);
     }
     app.trace_every = (uint32_t)every;
     if (trace_path != NULL) {
@@ -647,6 +694,9 @@ int main(int argc, char **argv)
     if (app.trace != NULL && fclose(app.trace) != 0) {
         fprintf(stderr, "daran-sim: --trace: write failed\n");
         app.status = 1;
+    }
+    if (nvm_dir != NULL) {
+        save_shafts(nvm_dir);
     }
     for (i = 0; i < DARAN_SIM_MAX_DRIVES; i++) {
         daran_sim_file_storage_close(&app.files[i]);
