@@ -1,9 +1,10 @@
-/* Compile-time options of the daran-ascii core.
+/** @file daran_config.h
+ * Compile-time options of the daran-ascii core.
  *
  * Every option has a default here and may be overridden on the compiler
  * command line (-DDARAN_LINE_MAX=200) or in a user header named by
  * DARAN_CONFIG_HEADER (CMake: -DDARAN_CONFIG_HEADER=my_daran_config.h), which
- * is included first. Impossible combinations stop the build with #error. */
+ * is included first. Impossible combinations stop the build with `#error`. */
 #ifndef DARAN_CONFIG_H
 #define DARAN_CONFIG_H
 
@@ -13,42 +14,42 @@
 #include DARAN_STRINGIFY(DARAN_CONFIG_HEADER)
 #endif
 
-/* Longest accepted line, in bytes before its '\n' (checksum field included).
- * A longer line is discarded up to its '\n' and answered `line too long`. */
+/** Longest accepted line, in bytes before its `\n` (checksum field included).
+ * A longer line is discarded up to its `\n` and answered `line too long`. */
 #ifndef DARAN_LINE_MAX
 #define DARAN_LINE_MAX 128
 #endif
 
-/* Receive ring between the byte-input (interrupt) side and daran_poll().
+/** Receive ring between the byte-input (interrupt) side and daran_poll().
  * Must be a power of two; it only needs to hold the bytes that arrive
  * between two calls of daran_poll(). */
 #ifndef DARAN_RX_RING_SIZE
 #define DARAN_RX_RING_SIZE 128
 #endif
 
-/* Longest reply line, in bytes including the optional " *NNN" and the line
+/** Longest reply line, in bytes including the optional " *NNN" and the line
  * end. The longest reply the core builds is an `e` line with every flag set. */
 #ifndef DARAN_REPLY_MAX
 #define DARAN_REPLY_MAX 96
 #endif
 
-/* 1: reply lines end in "\r\n" instead of "\n". */
+/** 1: reply lines end in `\r\n` instead of `\n`. */
 #ifndef DARAN_REPLY_CRLF
 #define DARAN_REPLY_CRLF 0
 #endif
 
-/* Highest motor id of the protocol (ids are 0..DARAN_MOTOR_ID_MAX, 0 = all). */
+/** Highest motor id of the protocol (ids are 0..DARAN_MOTOR_ID_MAX, 0 = all). */
 #ifndef DARAN_MOTOR_ID_MAX
 #define DARAN_MOTOR_ID_MAX 63
 #endif
 
-/* 0 leaves out the `h` help text (its strings cost flash); `h` then answers
+/** 0 leaves out the `h` help text (its strings cost flash); `h` then answers
  * `unknown command`. */
 #ifndef DARAN_ENABLE_HELP
 #define DARAN_ENABLE_HELP 1
 #endif
 
-/* 0 leaves out the multi-motor commands ms/mt/mq/mp/mv/mc (they then answer
+/** 0 leaves out the multi-motor commands ms/mt/mq/mp/mv/mc (they then answer
  * `unknown command`). */
 #ifndef DARAN_ENABLE_MULTI_MOTOR
 #define DARAN_ENABLE_MULTI_MOTOR 1

@@ -96,8 +96,8 @@ uint32_t daran_rx_dropped(const daran_drive_t *drive);
  * (blank lines included). O(bytes queued); never blocks. */
 size_t daran_poll(daran_drive_t *drive);
 
-/** Process one line the caller framed itself (without its '\n'; a trailing
- * '\r' is whitespace). Length and characters are checked as on the byte path.
+/** Process one line the caller framed itself (without its `\n`; a trailing
+ * `\r` is whitespace). Length and characters are checked as on the byte path.
  * All-or-nothing: a line that is answered with an error made no HAL setter,
  * move or action call. Returns DARAN_OK when the line was executed, ignored
  * (blank) or not addressed to this drive, otherwise the error that was

@@ -25,8 +25,8 @@ extern "C" {
 #endif
 
 /** Axis states of `requested_state` / `current_state`. */
-#define DARAN_STATE_IDLE 1u
-#define DARAN_STATE_CLOSED_LOOP 8u
+#define DARAN_STATE_IDLE 1u        /**< motor unpowered; motion commands answer `motor idle` */
+#define DARAN_STATE_CLOSED_LOOP 8u /**< under closed-loop control; motion is accepted */
 
 /** Bits of `axis0.error`, reported by `e`. Every bit except
  * DARAN_FLAG_NVM_CORRUPT blocks motion until `sc`; bits a port defines
@@ -37,14 +37,14 @@ extern "C" {
 #define DARAN_FLAG_FET_OVERTEMP   (1u << 3) /**< FET thermistor tripped */
 #define DARAN_FLAG_UNDERVOLTAGE   (1u << 4) /**< bus voltage below trip level */
 #define DARAN_FLAG_NVM_CORRUPT    (1u << 5) /**< stored config was damaged; defaults loaded (warning) */
-#define DARAN_FLAG_WARNING_MASK   DARAN_FLAG_NVM_CORRUPT
+#define DARAN_FLAG_WARNING_MASK   DARAN_FLAG_NVM_CORRUPT /**< the bits that do not block motion */
 
 /** A property value; the property's type says which member is meant
  * (DARAN_TYPE_BOOL uses u32, 0 or 1). */
 typedef union daran_value {
-    float f32;
-    uint32_t u32;
-    uint64_t u64;
+    float f32;    /**< DARAN_TYPE_F32 */
+    uint32_t u32; /**< DARAN_TYPE_U32, and DARAN_TYPE_BOOL as 0 or 1 */
+    uint64_t u64; /**< DARAN_TYPE_U64 */
 } daran_value_t;
 
 /** The control modes a motion command selects. */
@@ -83,14 +83,14 @@ typedef enum daran_move_kind {
  * `output_shaft.input_*` properties (see docs/porting.md). Unused members
  * are 0. */
 typedef struct daran_move {
-    daran_move_kind_t kind;
-    uint8_t given;
-    float pos_deg;
-    float vel_rpm;
-    float torque_nm;
-    float rate;
-    float kp;
-    float kd;
+    daran_move_kind_t kind; /**< the control mode; it says which members below are meant */
+    uint8_t given;          /**< DARAN_GIVEN_ bits: optional values the line carried */
+    float pos_deg;          /**< position, degrees of the output shaft */
+    float vel_rpm;          /**< velocity, r/min of the output shaft */
+    float torque_nm;        /**< torque, Nm at the output shaft */
+    float rate;             /**< filter bandwidth or ramp rate (see the table above) */
+    float kp;               /**< IMPEDANCE stiffness, Nm/deg, >= 0 */
+    float kd;               /**< IMPEDANCE damping, Nm/(r/min), >= 0 */
 } daran_move_t;
 
 /** Actions without values. */

@@ -1,4 +1,5 @@
-/* The properties a drive exposes to `r` and `w`: the single list from which
+/** @file daran_properties.h
+ * The properties a drive exposes to `r` and `w`: the single list from which
  * the core builds its lookup table and the HAL gets its property ids.
  *
  * X(ID, path, scope, type, access, range, unit)
@@ -17,6 +18,8 @@
 #ifndef DARAN_PROPERTIES_H
 #define DARAN_PROPERTIES_H
 
+/** The property list: one X(ID, path, scope, type, access, range, unit) per
+ * property, in the order described at the top of this file. */
 #define DARAN_PROPERTY_LIST(X) \
     X(CAN_BAUD_RATE,                  "can.config.baud_rate",                                 SYSTEM, U32,  RW, CAN_BAUD,     "bit/s") \
     X(UART_BAUDRATE,                  "config.uart_baudrate",                                 SYSTEM, U32,  RW, UART_BAUD,    "baud") \
@@ -72,30 +75,35 @@
     X(VEL_SETPOINT,                   "output_shaft.vel_setpoint",                            AXIS,   F32,  RW, NONE,         "r/min") \
     X(REQUESTED_STATE,                "requested_state",                                      AXIS,   U32,  RW, AXIS_STATE,   "")
 
+/** Property ids: DARAN_PROP_<ID> for each row of DARAN_PROPERTY_LIST, in
+ * list order, then DARAN_PROP_COUNT (how many there are). */
 typedef enum daran_prop {
+/** @cond INTERNAL */
 #define DARAN_PROP_ENUM_(id, path, scope, type, access, range, unit) DARAN_PROP_##id,
     DARAN_PROPERTY_LIST(DARAN_PROP_ENUM_)
 #undef DARAN_PROP_ENUM_
+/** @endcond */
     DARAN_PROP_COUNT
 } daran_prop_t;
 
+/** How a property's value travels in daran_value_t. */
 typedef enum daran_prop_type {
-    DARAN_TYPE_F32,
-    DARAN_TYPE_U32,
-    DARAN_TYPE_U64,
-    DARAN_TYPE_BOOL
+    DARAN_TYPE_F32, /**< float32, member f32 */
+    DARAN_TYPE_U32, /**< unsigned 32-bit, member u32 */
+    DARAN_TYPE_U64, /**< unsigned 64-bit, member u64 */
+    DARAN_TYPE_BOOL /**< 0 or 1 in member u32 */
 } daran_prop_type_t;
 
-/* What a written value must satisfy. */
+/** What a written value must satisfy; the core checks it before the HAL's set(). */
 typedef enum daran_range {
-    DARAN_RANGE_NONE,         /* any finite value */
-    DARAN_RANGE_NON_NEGATIVE, /* >= 0 */
-    DARAN_RANGE_POSITIVE,     /* > 0 */
-    DARAN_RANGE_BOOL,         /* 0 or 1 */
-    DARAN_RANGE_NODE_ID,      /* 1..DARAN_MOTOR_ID_MAX */
-    DARAN_RANGE_UART_BAUD,    /* 9600, 19200, 38400, 57600, 115200 */
-    DARAN_RANGE_CAN_BAUD,     /* 125000, 250000, 500000, 1000000 */
-    DARAN_RANGE_AXIS_STATE    /* DARAN_STATE_IDLE or DARAN_STATE_CLOSED_LOOP */
+    DARAN_RANGE_NONE,         /**< any finite value */
+    DARAN_RANGE_NON_NEGATIVE, /**< >= 0 */
+    DARAN_RANGE_POSITIVE,     /**< > 0 */
+    DARAN_RANGE_BOOL,         /**< 0 or 1 */
+    DARAN_RANGE_NODE_ID,      /**< 1..DARAN_MOTOR_ID_MAX */
+    DARAN_RANGE_UART_BAUD,    /**< 9600, 19200, 38400, 57600, 115200 */
+    DARAN_RANGE_CAN_BAUD,     /**< 125000, 250000, 500000, 1000000 */
+    DARAN_RANGE_AXIS_STATE    /**< DARAN_STATE_IDLE or DARAN_STATE_CLOSED_LOOP */
 } daran_range_t;
 
 #endif /* DARAN_PROPERTIES_H */

@@ -1,4 +1,5 @@
-/* The one return convention of the daran-ascii API.
+/** @file daran_result.h
+ * The one return convention of the daran-ascii API.
  *
  * Every function that can fail returns daran_result_t: DARAN_OK (0) is
  * success; every other value names one error reply of the protocol (its
@@ -13,36 +14,38 @@
 extern "C" {
 #endif
 
+/** Marks a result the caller must not ignore (warn_unused_result on GCC and clang). */
 #if defined(__GNUC__) || defined(__clang__)
 #define DARAN_NODISCARD __attribute__((warn_unused_result))
 #else
 #define DARAN_NODISCARD
 #endif
 
+/** DARAN_OK, or the error a request is answered with (its phrase in the comment). */
 typedef enum daran_result {
-    DARAN_OK = 0,
-    DARAN_ERR_UNKNOWN_COMMAND,       /* "unknown command" */
-    DARAN_ERR_INVALID_FORMAT,        /* "invalid command format" */
-    DARAN_ERR_INVALID_MOTOR,         /* "invalid motor" */
-    DARAN_ERR_INVALID_VALUE,         /* "invalid value" */
-    DARAN_ERR_OUT_OF_RANGE,          /* "value out of range" */
-    DARAN_ERR_INVALID_MODE,          /* "invalid mode" */
-    DARAN_ERR_INVALID_PROPERTY,      /* "invalid property" */
-    DARAN_ERR_READ_ONLY,             /* "read only property" */
-    DARAN_ERR_INVALID_CHECKSUM,      /* "invalid checksum" */
-    DARAN_ERR_CHECKSUM_MISMATCH,     /* "checksum mismatch" */
-    DARAN_ERR_LINE_TOO_LONG,         /* "line too long" */
-    DARAN_ERR_INVALID_CHARACTER,     /* "invalid character" */
-    DARAN_ERR_NO_PRESET,             /* "no preset" */
-    DARAN_ERR_TRAJECTORY_INFEASIBLE, /* "trajectory infeasible" */
-    DARAN_ERR_ESTOP_ACTIVE,          /* "estop active" */
-    DARAN_ERR_MOTOR_FAULT,           /* "motor fault" */
-    DARAN_ERR_MOTOR_IDLE,            /* "motor idle" */
-    DARAN_ERR_BAD_ARGUMENT,          /* API misuse; never sent on the link */
-    DARAN_RESULT_COUNT
+    DARAN_OK = 0,                    /**< success */
+    DARAN_ERR_UNKNOWN_COMMAND,       /**< "unknown command" */
+    DARAN_ERR_INVALID_FORMAT,        /**< "invalid command format" */
+    DARAN_ERR_INVALID_MOTOR,         /**< "invalid motor" */
+    DARAN_ERR_INVALID_VALUE,         /**< "invalid value" */
+    DARAN_ERR_OUT_OF_RANGE,          /**< "value out of range" */
+    DARAN_ERR_INVALID_MODE,          /**< "invalid mode" */
+    DARAN_ERR_INVALID_PROPERTY,      /**< "invalid property" */
+    DARAN_ERR_READ_ONLY,             /**< "read only property" */
+    DARAN_ERR_INVALID_CHECKSUM,      /**< "invalid checksum" */
+    DARAN_ERR_CHECKSUM_MISMATCH,     /**< "checksum mismatch" */
+    DARAN_ERR_LINE_TOO_LONG,         /**< "line too long" */
+    DARAN_ERR_INVALID_CHARACTER,     /**< "invalid character" */
+    DARAN_ERR_NO_PRESET,             /**< "no preset" */
+    DARAN_ERR_TRAJECTORY_INFEASIBLE, /**< "trajectory infeasible" */
+    DARAN_ERR_ESTOP_ACTIVE,          /**< "estop active" */
+    DARAN_ERR_MOTOR_FAULT,           /**< "motor fault" */
+    DARAN_ERR_MOTOR_IDLE,            /**< "motor idle" */
+    DARAN_ERR_BAD_ARGUMENT,          /**< API misuse; never sent on the link */
+    DARAN_RESULT_COUNT               /**< how many results there are; not a result */
 } daran_result_t;
 
-/* The error phrase of a result ("unknown command"), without "error: ".
+/** The error phrase of a result ("unknown command"), without "error: ".
  * DARAN_OK gives "ok"; a value outside the enum gives "motor fault", the
  * phrase the core answers when a HAL returns something it does not know.
  * O(1), touches nothing, cannot fail. */
