@@ -46,8 +46,11 @@ void board_uart0_init(uint32_t baud)
 
 uint8_t board_uart0_take_rx(void)
 {
-    uint8_t byte = (uint8_t)UART_DATA;
+    uint8_t byte;
+    /* Acknowledge before reading: reading DATA lets the next byte in at
+     * once, and its interrupt must not be cleared with this one's. */
     UART_INTSTATUS = UART_INT_RX;
+    byte = (uint8_t)UART_DATA;
     if ((UART_STATE & UART_STATE_RX_OVERRUN) != 0u) {
         UART_STATE = UART_STATE_RX_OVERRUN; /* write 1 to clear */
     }
