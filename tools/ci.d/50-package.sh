@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# Packaging and configuration suite (issue 8), run by tools/test:
+#   1. the API reference builds with no doxygen warning;
+#   2. `cmake --install` of a release build, then three consumers build and run
+#      against it (find_package, add_subdirectory, pkg-config), and the
+#      package's version file answers SameMajorVersion;
+#   3. an install built with a user options header (DARAN_CONFIG_HEADER) still
+#      agrees with its consumers;
+#   4. three daran_config.h configurations each build the core and pass
+#      tests/config, and impossible options stop the compiler at #error.
+# Release flags, Ninja, no sanitizers; budget 2 minutes. Exits non-zero on the
+# first failure, after printing that step's log.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+repo=$(pwd)
+start=$SECONDS
+
+need=()
+command -v doxygen >/dev/null 2>&1 || need+=(doxygen)
+command -v pkg-config >/dev/null 2>&1 || need+=(pkg-config)
+if [ ${#need[@]} -gt 0 ]; then
+  echo "50-package: installing ${need[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
+fi
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/daran-package.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+export CMAKE_GENERATOR=Ninja
+jobs=(-j 2)
+summary=()
+
+# step NAME COMMAND...: run quietly into a log; on failure show the log and stop.
+step() {
+  local name=$1
+  shift
+  local t0=$SECONDS
+  if "$@" >"$work/step.log" 2>&1; then
+    summary+=("PASS  $name ($((SECONDS - t0)) s)")
+  else
+    echo "50-package: FAIL $name; its output:"
+    sed 's/^/    /' "$work/step.log"
+    printf '%s\n' "${summary[@]}" "FAIL  $name"
+    echo "50-package: FAILED after $((SECONDS - start)) s"
+    exit 1
+  fi
+}
+
+doxygen_clean() {
+  # WARN_AS_ERROR=YES already fails the run; an empty log proves it said nothing.
+  (cat Doxyfile; echo "OUTPUT_DIRECTORY=$work/doxygen") | doxygen - >"$work/doxygen.log" 2>&1 ||
+    { cat "$work/doxygen.log"; return 1; }
+  if [ -s "$work/doxygen.log" ]; then cat "$work/doxygen.log"; return 1; fi
+  test -f "$work/doxygen/html/daran__drive_8h.html"
+}
+
+# install_core BUILD PREFIX [cmake args...]: a library-only release build, installed.
+install_core() {
+  local build=$1 prefix=$2
+  shift 2
+  cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release -DDARAN_BUILD_TESTS=OFF \
+    -DDARAN_BUILD_SIM=OFF -DDARAN_BUILD_DEMO=OFF -DDARAN_BUILD_BENCH=OFF "$@" &&
+    cmake --build "$build" "${jobs[@]}" &&
+    cmake --install "$build" --prefix "$prefix"
+}
+
+check_install_tree() {
+  local prefix=$1
+  for f in include/daran_ascii.h include/daran_drive.h include/daran_hal.h \
+           include/daran_config.h include/daran_properties.h include/daran_result.h \
+           lib/libdaran_ascii.a lib/pkgconfig/daran_ascii.pc \
+           lib/cmake/daran_ascii/daran_asciiConfig.cmake \
+           lib/cmake/daran_ascii/daran_asciiConfigVersion.cmake \
+           lib/cmake/daran_ascii/daran_asciiTargets.cmake; do
+    [ -f "$prefix/$f" ] || { echo "missing from the install: $f"; return 1; }
+  done
+}
+
+# consumer_cmake SOURCE BUILD [cmake args...]: configure, build and run tests/consumer/*.
+consumer_cmake() {
+  local src=$1 build=$2
+  shift 2
+  cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" &&
+    cmake --build "$build" "${jobs[@]}" &&
+    "$build/consumer"
+}
+
+consumer_pkg_config() {
+  local prefix=$1 out=$2
+  export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+  [ "$(pkg-config --modversion daran_ascii)" = 0.1.0 ] || { echo "wrong --modversion"; return 1; }
+  pkg-config --static --libs daran_ascii | grep -q -- -lm || { echo "no -lm in --static --libs"; return 1; }
+  # shellcheck disable=SC2046  # the flags must split into words
+  cc -std=c99 -Wall -Wextra -Werror -o "$out" tests/consumer/consumer.c \
+    $(pkg-config --cflags --libs daran_ascii) &&
+    "$out"
+}
+
+# config_suite NAME [cmake args...]: one configuration of daran_config.h.
+config_suite() {
+  local build="$work/config-$1"
+  shift
+  cmake -S tests/config -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" &&
+    cmake --build "$build" "${jobs[@]}" &&
+    ctest --test-dir "$build" --output-on-failure --no-tests=error
+}
+
+step "doxygen: API reference from include/, no warnings" doxygen_clean
+
+prefix="$work/prefix"
+step "install: release build of the core to a temporary prefix" \
+  install_core "$work/core" "$prefix"
+step "install: headers, library, CMake package and .pc are in place" check_install_tree "$prefix"
+step "install: version file is SameMajorVersion (0.1 yes, 1.0 no)" \
+  cmake -DPREFIX="$prefix" -P tests/consumer/version_check.cmake
+step "consumer: find_package(daran_ascii CONFIG) from the prefix" \
+  consumer_cmake tests/consumer/find_package "$work/consumer-find" -DCMAKE_PREFIX_PATH="$prefix"
+step "consumer: add_subdirectory of the source tree" \
+  consumer_cmake tests/consumer/add_subdirectory "$work/consumer-subdir" -DDARAN_SOURCE_DIR="$repo"
+step "consumer: cc \$(pkg-config --cflags --libs daran_ascii)" \
+  consumer_pkg_config "$prefix" "$work/consumer-pc"
+
+# The options header must travel with the installed package: consumers check
+# that a 256-byte line (config_c.h) is accepted by the library they link.
+prefix_c="$work/prefix-c"
+step "install: core built with DARAN_CONFIG_HEADER=tests/config/config_c.h" \
+  install_core "$work/core-c" "$prefix_c" -DDARAN_CONFIG_HEADER="$repo/tests/config/config_c.h"
+step "consumer: find_package of the configured install agrees on DARAN_LINE_MAX 256" \
+  consumer_cmake tests/consumer/find_package "$work/consumer-find-c" -DCMAKE_PREFIX_PATH="$prefix_c"
+step "consumer: pkg-config of the configured install agrees on DARAN_LINE_MAX 256" \
+  consumer_pkg_config "$prefix_c" "$work/consumer-pc-c"
+
+step "config (a): defaults, and impossible options stop at #error" \
+  config_suite a -DDARAN_TEST_OPTION_ERRORS=ON \
+  "-DDARAN_TEST_EXPECT=line_max=128;ring=128;reply_max=96;crlf=0;motor_id_max=63;help=1;multi=1"
+step "config (b): DARAN_LINE_MAX=64, DARAN_REPLY_CRLF=1, DARAN_ENABLE_HELP=0" \
+  config_suite b "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=64;DARAN_REPLY_CRLF=1;DARAN_ENABLE_HELP=0" \
+  "-DDARAN_TEST_EXPECT=line_max=64;crlf=1;help=0;multi=1;ring=128"
+step "config (c): user header: no multi-motor, 32-byte ring, 256-byte lines" \
+  config_suite c -DDARAN_CONFIG_HEADER="$repo/tests/config/config_c.h" \
+  "-DDARAN_TEST_EXPECT=line_max=256;ring=32;multi=0;help=1;crlf=0"
+
+printf '%s\n' "${summary[@]}"
+echo "50-package: ${#summary[@]} steps passed in $((SECONDS - start)) s"
