@@ -1,6 +1,7 @@
 /* Unit tests of numbers inside request fields: the float grammar and its
  * correct rounding (spec section 5, D14), exact integers for motor ids,
  * modes and integer properties (D7, D12, D13). One case per table row. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,6 +16,7 @@ static const char *const floats_accepted[] = {
     "123456789012345678901234567890", "0.000000000000000000000000000000000000001",
     "16777217", "1.00000005960464477539062500000000001",
     "1234567890123456789012345678901234567890123456789012345678901234567890e-60",
+    "1e38", "2e38", "-1e38", "0.00000000000000000000000000000000000001e76",
 };
 
 static void float_accepted_case(void **state)
@@ -181,6 +183,11 @@ static const mode_case_t mode_cases[] = {
     {"v 1 20 0 6", "invalid mode", 0},
     {"v 1 20 0 99999999999999999999", "invalid mode", 0},
     {"v 1 20 0 7", "invalid mode", 0},
+    {"v 1 20 3 8", "invalid mode", 0},
+    {"v 1 20 3 255", "invalid mode", 0},
+    {"v 1 20 3 258", "invalid mode", 0},
+    {"c 1 5 3 8", "invalid mode", 0},
+    {"c 1 5 3 262", "invalid mode", 0},
     {"v 1 20 0 2", "value out of range", 0},
     {"v 1 20 -5 2", "value out of range", 0},
     {"c 1 5 0 3", "invalid mode", 0},
@@ -282,6 +289,58 @@ static void test_non_finite_values_are_never_accepted_for_properties(void **stat
     ASSERT_ERROR(m, "w axis1.fet_thermistor.config.temp_limit_upper 1e39", "value out of range");
 }
 
+/* Decimal strings of every shape the grammar allows, from a fixed seed; each
+ * must reach the HAL bit-identical to a correct strtof. */
+static uint32_t rnd_state = 12345u;
+static uint32_t rnd(void)
+{
+    rnd_state = rnd_state * 1664525u + 1013904223u;
+    return rnd_state >> 8;
+}
+
+static void random_decimal(char *buf, size_t size)
+{
+    size_t k = 0;
+    uint32_t shape = rnd();
+    if (shape & 1u)
+        buf[k++] = (shape & 2u) ? '-' : '+';
+    size_t int_digits = rnd() % 22, frac_digits = rnd() % 22;
+    if (int_digits == 0 && frac_digits == 0)
+        int_digits = 1;
+    for (size_t i = 0; i < int_digits; i++)
+        buf[k++] = (char)('0' + rnd() % 10);
+    if (frac_digits > 0 || (shape & 4u)) {
+        buf[k++] = '.';
+        for (size_t i = 0; i < frac_digits; i++)
+            buf[k++] = (char)('0' + rnd() % 10);
+    }
+    if (shape & 8u) {
+        buf[k++] = (shape & 16u) ? 'e' : 'E';
+        int ex = (int)(rnd() % 90) - 60;
+        k += (size_t)snprintf(buf + k, size - k, (shape & 32u) ? "%+d" : "%d", ex);
+    }
+    buf[k] = '\0';
+}
+
+static void test_random_decimals_reach_the_hal_correctly_rounded(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    for (int i = 0; i < 4000; i++) {
+        char num[80], line[128];
+        random_decimal(num, sizeof num);
+        float want = strtof(num, NULL);
+        snprintf(line, sizeof line, "w axis1.output_shaft.input_pos %s", num);
+        if (!isfinite(want)) {
+            ASSERT_ERROR(m, line, "value out of range");
+            continue;
+        }
+        daran_value_t v = ASSERT_SET(m, line, DARAN_PROP_INPUT_POS);
+        mock_check(memcmp(&v.f32, &want, sizeof want) == 0, m, __FILE__, __LINE__,
+                   "\"%s\": expected %a, got %a", num, (double)want, (double)v.f32);
+    }
+}
+
 int main(void)
 {
     static mock_suite_t s;
@@ -297,6 +356,7 @@ int main(void)
                        "test_float_\"%.40s\"_is_out_of_range", floats_out_of_range[i]);
     ADD(test_every_float_field_of_every_command_uses_the_grammar);
     ADD(test_a_long_decimal_is_rounded_correctly);
+    ADD(test_random_decimals_reach_the_hal_correctly_rounded);
     for (size_t i = 0; i < sizeof id_cases / sizeof id_cases[0]; i++)
         mock_suite_add(&s, id_case_run, (void *)(uintptr_t)&id_cases[i],
                        "test_motor_id_\"%s\"_on_drive_%u_is_%s", id_cases[i].text,

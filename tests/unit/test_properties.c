@@ -175,6 +175,93 @@ static void test_non_finite_floats_read_as_nan_inf(void **state)
     assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"), "-inf\n");
 }
 
+/* Random float32 bit patterns read back through `r`: the reply must parse
+ * back to the same bits, use the fewest significant digits that can, and
+ * pick positional or scientific notation by the decimal exponent. */
+static bool some_decimal_with_digits_round_trips(float x, int p)
+{
+    char buf[64];
+    snprintf(buf, sizeof buf, "%.*e", p - 1, (double)x);
+    if (strtof(buf, NULL) == x)
+        return true;
+    /* the nearest p-digit decimal may miss an asymmetric interval; try its neighbours */
+    char *e = strchr(buf, 'e');
+    int ex = atoi(e + 1);
+    double mant = strtod(buf, NULL) / pow(10.0, ex);
+    for (int d = -1; d <= 1; d += 2) {
+        double cand = (mant + d * pow(10.0, -(p - 1))) * pow(10.0, ex);
+        snprintf(buf, sizeof buf, "%.*e", p - 1, cand);
+        if (strtof(buf, NULL) == x)
+            return true;
+    }
+    return false;
+}
+
+static void check_format(const mock_t *m, float x, const char *text)
+{
+    float back = strtof(text, NULL);
+    mock_check(memcmp(&back, &x, sizeof x) == 0, m, __FILE__, __LINE__,
+               "\"%s\" does not read back as %a", text, (double)x);
+    /* significant digits and decimal exponent of the text */
+    const char *c = text;
+    if (*c == '-')
+        c++;
+    char digits[64];
+    size_t nd = 0;
+    int point = -1, k;
+    const char *e = strchr(c, 'e');
+    const char *stop = e ? e : c + strlen(c);
+    for (const char *q = c; q < stop; q++) {
+        if (*q == '.')
+            point = (int)nd;
+        else
+            digits[nd++] = *q;
+    }
+    if (point < 0)
+        point = (int)nd;
+    size_t lead = 0;
+    while (lead < nd && digits[lead] == '0')
+        lead++;
+    size_t last = nd;
+    while (last > lead && digits[last - 1] == '0')
+        last--;
+    int sig = (int)(last - lead);
+    k = point - (int)lead - 1 + (e ? atoi(e + 1) : 0);
+    bool shortest = sig <= 1 || !some_decimal_with_digits_round_trips(x, sig - 1);
+    mock_check(shortest, m, __FILE__, __LINE__, "\"%s\" is not the shortest form of %a", text, (double)x);
+    if (k >= -5 && k <= 8) {
+        mock_check(e == NULL, m, __FILE__, __LINE__, "\"%s\": exponent %d wants positional", text, k);
+    } else {
+        mock_check(e != NULL && strchr(text, '.') != NULL && strchr(text, '.') < e &&
+                       (e[1] == '+' || e[1] == '-') && strlen(e + 2) >= 2,
+                   m, __FILE__, __LINE__, "\"%s\": exponent %d wants d.ddde+XX", text, k);
+    }
+}
+
+static void test_random_floats_read_back_bit_exact_in_shortest_form(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    uint32_t seed = 987654321u;
+    for (int i = 0; i < 6000; i++) {
+        seed = seed * 1664525u + 1013904223u;
+        uint32_t bits = seed;
+        if (i % 3 == 0) /* many values near ordinary magnitudes */
+            bits = (seed & 0x807FFFFFu) | ((uint32_t)(100 + (seed >> 23) % 56) << 23);
+        float x;
+        memcpy(&x, &bits, sizeof x);
+        if (!isfinite(x))
+            continue;
+        m->props[DARAN_PROP_INPUT_POS].f32 = x;
+        const char *got = ASSERT_QUERY(m, "r axis1.output_shaft.input_pos");
+        char text[64];
+        size_t n = strcspn(got, "\n");
+        memcpy(text, got, n);
+        text[n] = '\0';
+        check_format(m, x, text);
+    }
+}
+
 /* ---- write ---- */
 
 static const char *write_sample(const prop_row_t *p)
@@ -406,6 +493,7 @@ int main(void)
         mock_suite_add(&s, fmt_case_run, &fmt_cases[i], "test_float_%a_reads_as_\"%s\"",
                        (double)fmt_cases[i].value, fmt_cases[i].text);
     ADD(test_non_finite_floats_read_as_nan_inf);
+    ADD(test_random_floats_read_back_bit_exact_in_shortest_form);
     ADD(test_non_negative_accepts_negative_zero);
     ADD(test_unknown_paths_are_invalid_properties);
     ADD(test_a_path_for_another_drive_is_silent_whatever_it_names);
