@@ -90,9 +90,12 @@ static int is_digit(char c)
     return c >= '0' && c <= '9';
 }
 
-static int32_t saturate(size_t n)
+/* a - b as an int32, saturated at +-DARAN_NUM_CAP. */
+static int32_t diff_saturated(size_t a, size_t b)
 {
-    return n > (size_t)DARAN_NUM_CAP ? (int32_t)DARAN_NUM_CAP : (int32_t)n;
+    size_t d = a >= b ? a - b : b - a;
+    int32_t v = d > (size_t)DARAN_NUM_CAP ? (int32_t)DARAN_NUM_CAP : (int32_t)d;
+    return a >= b ? v : -v;
 }
 
 /* floor(x / 2^n) without relying on >> of a negative int (implementation
@@ -319,7 +322,7 @@ static uint32_t big_decide(const number_scan_t *s, uint32_t lo)
     for (i = z + take; i < s->total && !sticky; i++) {
         sticky = digit_at(s, i) != 0;
     }
-    e = saturate(s->int_len) - saturate(z) - (int32_t)take + s->exp10;
+    e = diff_saturated(s->int_len, z + take) + s->exp10;
     /* x * 10^e vs y * 2^f, i.e. (x * 5^e) * 2^e vs y * 2^f */
     if (e >= 0) {
         big_mul_pow5(&x, e);
@@ -392,7 +395,7 @@ daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
         int truncated = s.end > s.w_end;
         uint64_t w = truncated ? s.window : s.w;
         size_t w_end = truncated ? s.z + 19u : s.w_end;
-        bits = decimal_to_bits(&s, w, saturate(s.int_len) - saturate(w_end) + s.exp10, truncated);
+        bits = decimal_to_bits(&s, w, diff_saturated(s.int_len, w_end) + s.exp10, truncated);
         if (bits >= DARAN_F32_INF) {
             return DARAN_ERR_OUT_OF_RANGE;
         }
@@ -415,7 +418,7 @@ daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out)
     }
     if (s.end) {
         /* value = digits[z, end) * 10^e */
-        e = saturate(s.int_len) - saturate(s.end) + s.exp10;
+        e = diff_saturated(s.int_len, s.end) + s.exp10;
         if (e < 0) {
             return DARAN_ERR_INVALID_VALUE; /* a non-zero digit after the point */
         }

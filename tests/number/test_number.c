@@ -318,6 +318,28 @@ static void test_huge_exponents_saturate(void **state)
     expect_f32("100000000000000000000000000000000000000000000000000e-999999999", 0x00000000u);
 }
 
+static void test_a_million_zeros_are_only_zeros(void **state)
+{
+    static char text[1000016];
+    float f = 0.0f;
+    uint64_t v = 0;
+    size_t n;
+    (void)state;
+    memset(text, '0', 1000000);
+    memcpy(text + 1000000, "1.5", 3);
+    assert_int_equal(daran_parse_f32(text, 1000003, &f), DARAN_OK);
+    assert_true(f == 1.5f);
+    text[0] = '.';
+    memcpy(text + 1000000, "15e1000000", 10);
+    n = 1000010;
+    assert_int_equal(daran_parse_f32(text, n, &f), DARAN_OK);
+    assert_true(f == 1.5f);
+    assert_int_equal(daran_parse_u64(text, n, &v), DARAN_ERR_INVALID_VALUE); /* 1.5 */
+    memcpy(text + 1000000, "15e1000001", 10);
+    assert_int_equal(daran_parse_u64(text, n, &v), DARAN_OK);
+    assert_true(v == 15u);
+}
+
 /* ---- integers ---- */
 
 static void test_integer_spellings_of_five(void **state)
@@ -564,6 +586,7 @@ int main(void)
         cmocka_unit_test(test_flt_max_and_what_rounds_to_it_are_in_range),
         cmocka_unit_test(test_halfway_to_2_pow_128_is_out_of_range),
         cmocka_unit_test(test_huge_exponents_saturate),
+        cmocka_unit_test(test_a_million_zeros_are_only_zeros),
         cmocka_unit_test(test_integer_spellings_of_five),
         cmocka_unit_test(test_negative_zero_is_zero),
         cmocka_unit_test(test_negative_integers_are_out_of_range),
