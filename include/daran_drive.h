@@ -56,8 +56,10 @@ typedef struct daran_drive {
     void *forward_ctx;
     daran_rx_ring_t rx;
     uint16_t line_len;
+    uint16_t star_at;        /* index of the line's first '*', DARAN_LINE_MAX when none yet */
     uint16_t reply_len;
     uint8_t line_flags;
+    uint8_t line_xor;        /* XOR of the line's bytes before its first '*' */
     uint8_t reply_checksum;  /* the current request carried a checksum field */
     uint8_t has_preset;
     float preset[3];

@@ -29,6 +29,12 @@ daran_result_t daran_field_mode(const daran_field_t *field, uint32_t allowed, ui
 
 daran_result_t daran_field_motor(const daran_field_t *field, uint8_t *out)
 {
+    /* Nearly every line carries a plain one- or two-digit id. */
+    const char *text = field->text;
+    if (field->len == 1u && text[0] >= '0' && text[0] <= '9') {
+        *out = (uint8_t)(text[0] - '0');
+        return DARAN_OK;
+    }
     uint64_t id;
     if (daran_parse_u64(field->text, field->len, &id) != DARAN_OK || id > DARAN_MOTOR_ID_MAX) {
         return DARAN_ERR_INVALID_MOTOR;

@@ -17,6 +17,7 @@ daran_result_t daran_init(daran_drive_t *drive, const daran_hal_t *hal, void *ha
     drive->hal_ctx = hal_ctx;
     drive->write = write;
     drive->write_ctx = write_ctx;
+    daran_framer_reset(drive);
     return DARAN_OK;
 }
 
@@ -26,17 +27,23 @@ void daran_set_forward(daran_drive_t *drive, daran_forward_fn forward, void *ctx
     drive->forward_ctx = ctx;
 }
 
-daran_result_t daran_process_line(daran_drive_t *drive, const char *line, size_t len)
+daran_result_t daran_process_line(daran_drive_t *drive, const char *text, size_t len)
 {
     drive->reply_checksum = 0;
+    daran_line_t line = {text, len, len, 0};
     daran_result_t result = DARAN_OK;
     if (len > DARAN_LINE_MAX) {
         result = DARAN_ERR_LINE_TOO_LONG;
-    } else {
-        for (size_t i = 0; i < len; i++) {
-            if (!daran_byte_allowed((uint8_t)line[i])) {
-                result = DARAN_ERR_INVALID_CHARACTER;
-                break;
+    }
+    for (size_t i = 0; i < len && result == DARAN_OK; i++) {
+        uint8_t byte = (uint8_t)text[i];
+        if (!daran_byte_allowed(byte)) {
+            result = DARAN_ERR_INVALID_CHARACTER;
+        } else if (line.star_at == len) {
+            if (byte == '*') {
+                line.star_at = i;
+            } else {
+                line.xor_before_star = (uint8_t)(line.xor_before_star ^ byte);
             }
         }
     }
@@ -44,7 +51,7 @@ daran_result_t daran_process_line(daran_drive_t *drive, const char *line, size_t
         daran_reply_error(drive, result);
         return result;
     }
-    return daran_execute_line(drive, line, len);
+    return daran_execute_line(drive, &line);
 }
 
 /* An `axisN.` path: N is the motor, the rest is looked up among the axis
@@ -105,13 +112,13 @@ static daran_result_t own_id(daran_drive_t *drive, uint32_t *id)
     return result;
 }
 
-static daran_result_t dispatch(daran_drive_t *drive, const char *line, size_t line_len,
-                               const char *payload, size_t payload_len)
+static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
 {
     daran_fields_t fields;
-    daran_split_fields(payload, payload_len, &fields);
+    daran_split_fields(line->text, line->star_at, &fields);
     if (fields.count == 0u) {
-        return DARAN_ERR_UNKNOWN_COMMAND; /* a checksum with no command (D5) */
+        /* Blank lines are ignored; a checksum with no command is not (D5). */
+        return drive->reply_checksum ? DARAN_ERR_UNKNOWN_COMMAND : DARAN_OK;
     }
     const daran_command_t *command = daran_find_command(&fields.at[0]);
     if (command == NULL) {
@@ -143,12 +150,12 @@ static daran_result_t dispatch(daran_drive_t *drive, const char *line, size_t li
     bool is_read = (command->flags & DARAN_CMD_READ) != 0u;
     if (request.motor != 0u && request.motor != id) {
         if (drive->forward != NULL) {
-            drive->forward(drive->forward_ctx, request.motor, line, line_len);
+            drive->forward(drive->forward_ctx, request.motor, line->text, line->len);
         }
         return DARAN_OK;
     }
     if (request.motor == 0u && !is_read && drive->forward != NULL) {
-        drive->forward(drive->forward_ctx, 0, line, line_len);
+        drive->forward(drive->forward_ctx, 0, line->text, line->len);
     }
 
     if (!count_ok) {
@@ -163,20 +170,11 @@ static daran_result_t dispatch(daran_drive_t *drive, const char *line, size_t li
     return daran_run_command(drive, &request);
 }
 
-daran_result_t daran_execute_line(daran_drive_t *drive, const char *line, size_t len)
+daran_result_t daran_execute_line(daran_drive_t *drive, const daran_line_t *line)
 {
-    size_t i = 0;
-    while (i < len && daran_is_blank(line[i])) {
-        i++;
-    }
-    if (i == len) {
-        return DARAN_OK; /* blank lines are ignored */
-    }
-
-    size_t payload_len;
-    daran_result_t result = daran_checksum_split(line, len, &payload_len, &drive->reply_checksum);
+    daran_result_t result = daran_checksum_check(line, &drive->reply_checksum);
     if (result == DARAN_OK) {
-        result = dispatch(drive, line, len, line, payload_len);
+        result = dispatch(drive, line);
     }
     if (result != DARAN_OK) {
         daran_reply_error(drive, result);

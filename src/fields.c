@@ -6,11 +6,6 @@ bool daran_is_blank(char c)
     return c == ' ' || c == '\t' || c == '\r';
 }
 
-bool daran_byte_allowed(uint8_t byte)
-{
-    return (byte >= 0x20u && byte <= 0x7Eu) || byte == '\t' || byte == '\r';
-}
-
 void daran_split_fields(const char *text, size_t len, daran_fields_t *out)
 {
     size_t i = 0;

@@ -36,6 +36,10 @@ typedef struct daran_request {
 
 typedef daran_result_t (*daran_handler_fn)(daran_drive_t *drive, const daran_request_t *request);
 
+/* daran_drive_t.line_flags */
+#define DARAN_LINE_TOO_LONG 0x01u
+#define DARAN_LINE_INVALID_BYTE 0x02u
+
 /* Command flags. */
 #define DARAN_CMD_READ 0x01u /* answered for id 0 and never forwarded */
 #define DARAN_CMD_PATH 0x02u /* the id comes from a property path (r, w) */
@@ -65,19 +69,30 @@ typedef uint8_t daran_property_t;
 #define DARAN_PROPERTY_TYPE(row) ((daran_prop_type_t)(((row) >> 1) & 3u))
 #define DARAN_PROPERTY_RANGE(row) ((daran_range_t)((row) >> 3))
 
+/* A framed line and what the framer learnt of it on the way in, so later
+ * stages need not scan it again. */
+typedef struct daran_line {
+    const char *text;
+    size_t len;
+    size_t star_at; /* index of the first '*'; len when there is none */
+    uint8_t xor_before_star;
+} daran_line_t;
+
 /* checksum.c */
 uint8_t daran_xor(const char *text, size_t len);
-/* Split off a "*N" field: *payload_len is the length before the '*' (len if
- * none). DARAN_OK with *has_checksum 0 when there is none; DARAN_OK with
- * *has_checksum 1 when it is well-formed and matches;
+/* Check the "*N" field of a line (D4). DARAN_OK with *has_checksum 0 when
+ * there is none, 1 when it is well-formed and matches;
  * DARAN_ERR_CHECKSUM_MISMATCH (*has_checksum 1) or DARAN_ERR_INVALID_CHECKSUM
  * (*has_checksum 0) otherwise. */
-daran_result_t daran_checksum_split(const char *line, size_t len, size_t *payload_len,
-                                    uint8_t *has_checksum);
+daran_result_t daran_checksum_check(const daran_line_t *line, uint8_t *has_checksum);
 
 /* fields.c */
 bool daran_is_blank(char c);
-bool daran_byte_allowed(uint8_t byte);
+/* Printable ASCII, tab or '\r': branch-light, for the per-byte path. */
+static inline bool daran_byte_allowed(uint8_t byte)
+{
+    return (uint8_t)(byte - 0x20u) < 0x5Fu || byte == '\t' || byte == '\r';
+}
 void daran_split_fields(const char *text, size_t len, daran_fields_t *out);
 
 /* command_table.c */
@@ -101,13 +116,16 @@ void daran_reply_space(daran_drive_t *drive);
 void daran_reply_end(daran_drive_t *drive);
 void daran_reply_error(daran_drive_t *drive, daran_result_t result);
 
-/* framer.c */
+/* framer.c: bytes -> the instance's line buffer */
 void daran_framer_reset(daran_drive_t *drive);
-/* Returns true when the byte completed a line (processed or rejected). */
-bool daran_framer_feed(daran_drive_t *drive, uint8_t byte, bool damaged);
+/* Append bytes[0..n) to the line up to, not including, the first '\n';
+ * returns how many bytes it took (n when there was no '\n'). */
+size_t daran_framer_append(daran_drive_t *drive, const uint8_t *bytes, size_t n);
+/* The line's '\n' arrived: reject or run the line, reset the framer. */
+void daran_framer_end_line(daran_drive_t *drive, bool damaged);
 
 /* drive.c: a framed line whose length and characters are known good. */
-daran_result_t daran_execute_line(daran_drive_t *drive, const char *line, size_t len);
+daran_result_t daran_execute_line(daran_drive_t *drive, const daran_line_t *line);
 
 /* commands_common.c: what every handler needs */
 daran_result_t daran_field_f32(const daran_field_t *field, float *out);

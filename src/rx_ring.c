@@ -6,7 +6,8 @@
  * When the ring is full the producer loses the byte, and with it the line
  * it belonged to: it discards the rest of that line and marks the '\n' that
  * ends it as damaged, so the framer rejects the line instead of executing a
- * line with a hole in it. */
+ * line with a hole in it. Only '\n' slots carry a mark, so only they update
+ * the bitmap. */
 #include "internal.h"
 
 #define MASK ((uint16_t)(DARAN_RX_RING_SIZE - 1u))
@@ -17,22 +18,18 @@
 #define FENCE() ((void)0)
 #endif
 
-static void mark_slot(daran_rx_ring_t *ring, uint16_t slot, bool damaged)
+static void mark_newline(daran_rx_ring_t *ring, uint16_t slot, bool damaged)
 {
     uint8_t bit = (uint8_t)(1u << (slot & 7u));
-    if (damaged) {
-        ring->damaged[slot >> 3] = (uint8_t)(ring->damaged[slot >> 3] | bit);
-    } else {
-        ring->damaged[slot >> 3] = (uint8_t)(ring->damaged[slot >> 3] & (uint8_t)~bit);
-    }
+    uint8_t *cell = &ring->damaged[slot >> 3];
+    *cell = damaged ? (uint8_t)(*cell | bit) : (uint8_t)(*cell & (uint8_t)~bit);
 }
 
 bool daran_rx_byte(daran_drive_t *drive, uint8_t byte)
 {
     daran_rx_ring_t *ring = &drive->rx;
     uint16_t head = ring->head;
-    uint16_t tail = ring->tail;
-    if ((uint16_t)(head - tail) >= DARAN_RX_RING_SIZE) {
+    if ((uint16_t)(head - ring->tail) >= DARAN_RX_RING_SIZE) {
         ring->producer_dropping = 1;
         ring->dropped++;
         return false;
@@ -48,7 +45,9 @@ bool daran_rx_byte(daran_drive_t *drive, uint8_t byte)
     }
     uint16_t slot = (uint16_t)(head & MASK);
     ring->bytes[slot] = byte;
-    mark_slot(ring, slot, damaged);
+    if (byte == '\n') {
+        mark_newline(ring, slot, damaged);
+    }
     FENCE();
     ring->head = (uint16_t)(head + 1u);
     return true;
@@ -57,8 +56,26 @@ bool daran_rx_byte(daran_drive_t *drive, uint8_t byte)
 size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
 {
     const uint8_t *bytes = (const uint8_t *)data;
-    size_t queued = 0;
-    for (size_t i = 0; i < len; i++) {
+    daran_rx_ring_t *ring = &drive->rx;
+    size_t i = 0;
+    if (!ring->producer_dropping) {
+        /* Fast path: copy what fits, publish once. */
+        uint16_t head = ring->head;
+        size_t room = DARAN_RX_RING_SIZE - (uint16_t)(head - ring->tail);
+        size_t fits = len < room ? len : room;
+        for (; i < fits; i++) {
+            uint16_t slot = (uint16_t)(head & MASK);
+            ring->bytes[slot] = bytes[i];
+            if (bytes[i] == '\n') {
+                mark_newline(ring, slot, false);
+            }
+            head++;
+        }
+        FENCE();
+        ring->head = head;
+    }
+    size_t queued = i;
+    for (; i < len; i++) { /* full, or finishing a damaged line */
         if (daran_rx_byte(drive, bytes[i])) {
             queued++;
         }
@@ -79,15 +96,26 @@ size_t daran_poll(daran_drive_t *drive)
     size_t lines = 0;
     FENCE();
     while (tail != head) {
+        /* The queued bytes up to the ring's end: one contiguous run. */
         uint16_t slot = (uint16_t)(tail & MASK);
-        uint8_t byte = ring->bytes[slot];
-        bool damaged = (((unsigned)ring->damaged[slot >> 3] >> (slot & 7u)) & 1u) != 0u;
-        FENCE();
-        tail = (uint16_t)(tail + 1u);
-        ring->tail = tail; /* free the slot before the line runs: the producer may refill it */
-        if (daran_framer_feed(drive, byte, damaged)) {
-            lines++;
+        size_t run = (uint16_t)(head - tail);
+        if (run > (size_t)(DARAN_RX_RING_SIZE - slot)) {
+            run = (size_t)(DARAN_RX_RING_SIZE - slot);
         }
+        size_t taken = daran_framer_append(drive, &ring->bytes[slot], run);
+        tail = (uint16_t)(tail + taken);
+        if (taken == run) {
+            continue;
+        }
+        slot = (uint16_t)(tail & MASK); /* the '\n' */
+        bool damaged = (((unsigned)ring->damaged[slot >> 3] >> (slot & 7u)) & 1u) != 0u;
+        tail++;
+        FENCE();
+        ring->tail = tail; /* free the slots before the line runs: the producer may refill them */
+        daran_framer_end_line(drive, damaged);
+        lines++;
     }
+    FENCE();
+    ring->tail = tail;
     return lines;
 }
