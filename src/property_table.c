@@ -2,8 +2,8 @@
  * and the lookup of a path.
  *
  * Paths are not stored whole. src/property_index.h (generated from the same
- * list by tools/gen_property_index.py) holds every dot-separated segment once
- * and each path as a key of segment numbers, so lookup is two binary
+ * list by tools/gen_property_index.py) holds every dot-separated segment once,
+ * 5 bits a character, and each path as a key of segment numbers, so lookup is two binary
  * searches: O(log segments) per segment, then O(log properties) for the key. */
 #include "internal.h"
 #include "property_index.h"
@@ -32,6 +32,14 @@ const daran_property_t daran_properties[DARAN_PROP_COUNT] = {
 #undef DARAN_PROPERTY_ROW_
 };
 
+/* Character i of the packed segment text. */
+static unsigned char segment_char(size_t i)
+{
+    size_t bit = i * 5u;
+    unsigned pair = (unsigned)segment_text[bit >> 3] | (unsigned)segment_text[(bit >> 3) + 1u] << 8;
+    return (unsigned char)DARAN_SEGMENT_ALPHABET[(pair >> (bit & 7u)) & 0x1Fu];
+}
+
 /* The segment number (1-based) of text[0..len), or 0 when there is none. */
 static uint32_t find_segment(const char *text, size_t len)
 {
@@ -44,7 +52,7 @@ static uint32_t find_segment(const char *text, size_t len)
         size_t common = seg_len < len ? seg_len : len;
         int order = 0;
         for (size_t i = 0; i < common && order == 0; i++) {
-            unsigned char a = (unsigned char)segment_text[start + i];
+            unsigned char a = segment_char(start + i);
             unsigned char b = (unsigned char)text[i];
             order = a == b ? 0 : (a < b ? -1 : 1);
         }

@@ -19,6 +19,8 @@ OUT = os.path.join(ROOT, "src", "property_index.h")
 
 SEGMENT_BITS = 6
 MAX_SEGMENTS = 4
+# Segment text is packed 5 bits a character: code = index in this alphabet.
+ALPHABET = "abcdefghijklmnopqrstuvwxyz_I"
 
 
 def read_properties():
@@ -58,11 +60,33 @@ def generate():
     out.append("#define DARAN_SEGMENT_COUNT %du" % len(segments))
     out.append("#define DARAN_KEY_COUNT %du" % len(keys))
     out.append("")
-    out.append("/* Every segment once, sorted by bytes, without terminators. */")
-    out.append("static const char segment_text[] =")
-    for seg in segments:
-        out.append('    "%s"' % seg)
-    out.append("    ;")
+    text = "".join(segments)
+    for ch in text:
+        if ch not in ALPHABET:
+            sys.exit("gen_property_index: %r is not in the 5-bit alphabet" % ch)
+    bits = 0
+    nbits = 0
+    packed = []
+    for ch in text:
+        bits |= ALPHABET.index(ch) << nbits
+        nbits += 5
+        while nbits >= 8:
+            packed.append(bits & 0xFF)
+            bits >>= 8
+            nbits -= 8
+    packed.append(bits & 0xFF)  # the tail, and one spare byte so a 16-bit read never overruns
+    packed.append(0)
+    out.append("/* The 5-bit alphabet of segment_text: code n is DARAN_SEGMENT_ALPHABET[n]. */")
+    out.append('#define DARAN_SEGMENT_ALPHABET "%s"' % ALPHABET)
+    out.append("")
+    out.append("/* Every segment once, sorted by bytes, concatenated without terminators, 5")
+    out.append(" * bits a character, least significant bits first: */")
+    for i in range(0, len(segments), 6):
+        out.append("/*   " + " ".join(segments[i:i + 6]) + " */")
+    out.append("static const uint8_t segment_text[%d] = {" % len(packed))
+    for i in range(0, len(packed), 16):
+        out.append("    " + ", ".join("0x%02x" % b for b in packed[i:i + 16]) + ",")
+    out.append("};")
     out.append("")
     out.append("/* Where segment n (1-based) ends in segment_text; it starts where n-1 ends. */")
     ends, pos = [], 0
