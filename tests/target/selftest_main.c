@@ -1,0 +1,60 @@
+/* The on-target self-test image (daran-selftest.elf): the protocol cases and
+ * the number sample, run on the Cortex-M4 under QEMU. It prints a FAIL line
+ * per failure and closes with `N passed, M failed`; the exit status
+ * (semihosting) is 0 only when nothing failed. */
+#include <string.h>
+
+#include "board.h"
+#include "selftest.h"
+
+void selftest_write(const char *bytes, size_t len)
+{
+    board_uart0_write(bytes, len);
+}
+
+void selftest_print(const char *text)
+{
+    selftest_write(text, strlen(text));
+}
+
+void selftest_print_u32(uint32_t value)
+{
+    char buf[10];
+    size_t n = sizeof buf;
+    do {
+        buf[--n] = (char)('0' + value % 10u);
+        value /= 10u;
+    } while (value != 0u && n > 0u);
+    selftest_write(buf + n, sizeof buf - n);
+}
+
+void selftest_print_escaped(const char *text)
+{
+    static const char hex[] = "0123456789abcdef";
+    for (; *text != '\0'; text++) {
+        unsigned char c = (unsigned char)*text;
+        if (c == '\n') {
+            selftest_print("\\n");
+        } else if (c == '\r') {
+            selftest_print("\\r");
+        } else if (c < 0x20u || c > 0x7Eu) {
+            char esc[4] = {'\\', 'x', hex[c >> 4], hex[c & 15u]};
+            selftest_write(esc, sizeof esc);
+        } else {
+            selftest_write(text, 1u);
+        }
+    }
+}
+
+int main(void)
+{
+    selftest_tally_t tally = {0u, 0u};
+    board_uart0_init(115200u);
+    selftest_protocol_cases(&tally);
+    selftest_number_cases(&tally);
+    selftest_print_u32(tally.passed);
+    selftest_print(" passed, ");
+    selftest_print_u32(tally.failed);
+    selftest_print(" failed\n");
+    board_exit(tally.failed == 0u && tally.passed > 0u ? 0 : 1);
+}
