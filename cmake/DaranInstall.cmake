@@ -96,9 +96,10 @@ set(_daran_pc_cflags "")
 if(_daran_config_header_name)
   set(_daran_pc_cflags " -DDARAN_CONFIG_HEADER=${_daran_config_header_name}")
 endif()
+# libm for sqrtf/fabsf where the compiler does not inline them (-O0 on hosts).
 set(_daran_pc_libs_private "")
 if(NOT CMAKE_CROSSCOMPILING AND DARAN_LIBM)
-  set(_daran_pc_libs_private "-lm")
+  set(_daran_pc_libs_private "\nLibs.private: -lm")
 endif()
 configure_file("${CMAKE_CURRENT_LIST_DIR}/daran_ascii.pc.in"
                "${PROJECT_BINARY_DIR}/daran_ascii.pc" @ONLY)
