@@ -63,7 +63,8 @@ static const char usage_text[] =
     "                     undervoltage: the bus sags to 8 V for 0.1 s (trip at\n"
     "                     10 V); nvm-corrupt: the stored config is damaged, found\n"
     "                     at the next boot (defaults, warning flag nvm_corrupt)\n"
-    "  !load ID NM        apply an external load torque of NM to the shaft\n"
+    "  !load ID NM        apply an external load torque of NM (-1000..1000) to the\n"
+    "                     shaft; 0 removes it\n"
     "  !# TEXT            a comment, ignored\n"
     "  ID is a drive's current can_node_id; 0 means every drive.\n"
     "\n"
@@ -334,8 +335,8 @@ static void directive(char *line)
         }
         errno = 0;
         nm = strtof(argv[2], &end);
-        if (errno != 0 || *end != '\0' || end == argv[2] || !isfinite(nm)) {
-            complain("bad torque '%s' for !load", argv[2]);
+        if (errno != 0 || *end != '\0' || end == argv[2] || !(fabsf(nm) <= 1000.0f)) {
+            complain("bad torque '%s' for !load (Nm, -1000..1000)", argv[2]);
             return;
         }
         n = select_drives(argv[1], sel);

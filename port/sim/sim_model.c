@@ -13,7 +13,7 @@
 static const struct {
     daran_prop_t prop;
     daran_value_t value;
-} defaults_f32_or_u32[] = {
+} config_defaults[] = {
     {DARAN_PROP_CAN_BAUD_RATE, {.u32 = 1000000u}},
     {DARAN_PROP_UART_BAUDRATE, {.u32 = 115200u}},
     {DARAN_PROP_CAN_NODE_ID, {.u32 = 1u}},
@@ -155,8 +155,8 @@ static float limit_pos(const daran_sim_model_t *m, float pos)
 void daran_sim_model_default_config(daran_sim_model_t *m)
 {
     size_t i;
-    for (i = 0; i < sizeof defaults_f32_or_u32 / sizeof defaults_f32_or_u32[0]; i++) {
-        m->cfg[defaults_f32_or_u32[i].prop] = defaults_f32_or_u32[i].value;
+    for (i = 0; i < sizeof config_defaults / sizeof config_defaults[0]; i++) {
+        m->cfg[config_defaults[i].prop] = config_defaults[i].value;
     }
     m->zero_offset_deg = 0.0f;
 }
@@ -316,7 +316,7 @@ static void trap_plan(daran_sim_model_t *m, float target)
      * of exactly 2 s computes to 2.0000002 s) still ends on that tick. */
     {
         float n = ceilf(m->trap_total * (float)m->tick_hz - 1e-3f);
-        m->trap_end_tick = n < 4.0e9f ? (uint32_t)n : UINT32_MAX;
+        m->trap_end_tick = n >= 0.0f && n < 4.0e9f ? (uint32_t)n : UINT32_MAX;
     }
     m->trap_ticks = 0u;
     m->trajectory_done = dist == 0.0f;
@@ -652,6 +652,18 @@ static void protections(daran_sim_model_t *m)
     }
 }
 
+/* First-order approach to the steady temperature. Absurd settings (a
+ * torque constant of 1e-40 Nm/A) must not turn the state into inf/nan: a
+ * burnt-out motor reads hot, not "nan". */
+static float thermal_step(float temp, float steady, float alpha)
+{
+    if (!(steady < 1.0e4f)) {
+        steady = 1.0e4f;
+    }
+    temp += (steady - temp) * alpha;
+    return temp < 1.0e4f ? temp : 1.0e4f;
+}
+
 static void plant(daran_sim_model_t *m)
 {
     const daran_sim_params_t *p = &m->par;
@@ -691,10 +703,10 @@ static void plant(daran_sim_model_t *m)
         m->vbus_v = p->vbus_nominal - p->source_resistance * m->ibus_a;
     }
 
-    m->motor_temp_c += (p->ambient_temp + p->motor_heat * iq * iq - m->motor_temp_c) *
-                       (dt / p->motor_time_const);
-    m->fet_temp_c += (p->ambient_temp + p->fet_heat * iq * iq - m->fet_temp_c) *
-                     (dt / p->fet_time_const);
+    m->motor_temp_c = thermal_step(m->motor_temp_c, p->ambient_temp + p->motor_heat * iq * iq,
+                                   dt / p->motor_time_const);
+    m->fet_temp_c = thermal_step(m->fet_temp_c, p->ambient_temp + p->fet_heat * iq * iq,
+                                 dt / p->fet_time_const);
 }
 
 void daran_sim_model_tick(daran_sim_model_t *m)
