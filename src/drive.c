@@ -147,15 +147,15 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     if (result != DARAN_OK) {
         return result;
     }
-    bool is_read = (command->flags & DARAN_CMD_READ) != 0u;
-    if (request.motor != 0u && request.motor != id) {
-        if (drive->forward != NULL) {
-            drive->forward(drive->forward_ctx, request.motor, line->text, line->len);
-        }
-        return DARAN_OK;
+    /* Another drive's line, or a broadcast that is not a read, goes to the
+     * gateway too (D10); only the broadcast also runs here. */
+    bool elsewhere = request.motor != 0u && request.motor != id;
+    bool broadcast = request.motor == 0u && (command->flags & DARAN_CMD_READ) == 0u;
+    if ((elsewhere || broadcast) && drive->forward != NULL) {
+        drive->forward(drive->forward_ctx, request.motor, line->text, line->len);
     }
-    if (request.motor == 0u && !is_read && drive->forward != NULL) {
-        drive->forward(drive->forward_ctx, 0, line->text, line->len);
+    if (elsewhere) {
+        return DARAN_OK;
     }
 
     if (!count_ok) {
