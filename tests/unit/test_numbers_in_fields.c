@@ -341,6 +341,86 @@ static void test_random_decimals_reach_the_hal_correctly_rounded(void **state)
     }
 }
 
+/* Decimals at and around the exact midpoint between two neighbouring
+ * float32 values, written with every digit (up to what a line holds), with
+ * a far-out extra digit, and cut short: ties-to-even and sticky digits. */
+static void test_midpoints_between_floats_round_to_nearest_even(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    uint32_t seed = 424242u;
+    for (int i = 0; i < 1500; i++) {
+        seed = seed * 1664525u + 1013904223u;
+        /* exponents from 2^-30 to 2^40 keep the exact midpoint within a line */
+        uint32_t bits = (seed & 0x007FFFFFu) | ((uint32_t)(97 + (seed >> 24) % 70) << 23);
+        float lo;
+        memcpy(&lo, &bits, sizeof lo);
+        float hi = nextafterf(lo, INFINITY);
+        double mid = ((double)lo + (double)hi) / 2.0;
+        char exact[128], num[160], line[200];
+        snprintf(exact, sizeof exact, "%.70f", mid);
+        /* trim trailing zeros: the decimal is exact */
+        size_t n = strlen(exact);
+        while (n > 0 && exact[n - 1] == '0')
+            n--;
+        if (exact[n - 1] == '.')
+            n--;
+        exact[n] = '\0';
+        if (n > 90)
+            continue;
+        const char *variants[3] = {"", "00000000000000001", NULL};
+        for (int v = 0; v < 3; v++) {
+            if (v < 2) {
+                snprintf(num, sizeof num, "%s%s%s", exact, strchr(exact, '.') || v == 0 ? "" : ".",
+                         variants[v]);
+            } else {
+                /* just below the midpoint: the last digit one less, then many nines */
+                snprintf(num, sizeof num, "%s", exact);
+                size_t k = strlen(num);
+                if (num[k - 1] == '0' || !strchr(num, '.'))
+                    continue;
+                num[k - 1] = (char)(num[k - 1] - 1);
+                strcat(num, "9999999999");
+            }
+            float want = strtof(num, NULL);
+            snprintf(line, sizeof line, "w axis1.output_shaft.input_pos %s", num);
+            if (strlen(line) > DARAN_LINE_MAX)
+                continue;
+            daran_value_t got = ASSERT_SET(m, line, DARAN_PROP_INPUT_POS);
+            mock_check(memcmp(&got.f32, &want, sizeof want) == 0, m, __FILE__, __LINE__,
+                       "\"%s\": expected %a, got %a", num, (double)want, (double)got.f32);
+        }
+    }
+}
+
+/* Long random digit strings, up to the line limit. */
+static void test_long_random_decimals_are_correctly_rounded(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    for (int i = 0; i < 1500; i++) {
+        char num[100], line[140];
+        size_t len = 20 + rnd() % 70, dot = rnd() % len, k = 0;
+        for (size_t j = 0; j < len; j++) {
+            if (j == dot)
+                num[k++] = '.';
+            num[k++] = (char)('0' + rnd() % 10);
+        }
+        num[k] = '\0';
+        if (rnd() & 1u)
+            snprintf(num + k, sizeof num - k, "e%d", (int)(rnd() % 80) - 60);
+        float want = strtof(num, NULL);
+        snprintf(line, sizeof line, "w axis1.output_shaft.input_pos %s", num);
+        if (!isfinite(want)) {
+            ASSERT_ERROR(m, line, "value out of range");
+            continue;
+        }
+        daran_value_t got = ASSERT_SET(m, line, DARAN_PROP_INPUT_POS);
+        mock_check(memcmp(&got.f32, &want, sizeof want) == 0, m, __FILE__, __LINE__,
+                   "\"%s\": expected %a, got %a", num, (double)want, (double)got.f32);
+    }
+}
+
 int main(void)
 {
     static mock_suite_t s;
@@ -357,6 +437,8 @@ int main(void)
     ADD(test_every_float_field_of_every_command_uses_the_grammar);
     ADD(test_a_long_decimal_is_rounded_correctly);
     ADD(test_random_decimals_reach_the_hal_correctly_rounded);
+    ADD(test_midpoints_between_floats_round_to_nearest_even);
+    ADD(test_long_random_decimals_are_correctly_rounded);
     for (size_t i = 0; i < sizeof id_cases / sizeof id_cases[0]; i++)
         mock_suite_add(&s, id_case_run, (void *)(uintptr_t)&id_cases[i],
                        "test_motor_id_\"%s\"_on_drive_%u_is_%s", id_cases[i].text,
