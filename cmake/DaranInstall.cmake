@@ -45,8 +45,10 @@ if(DARAN_CONFIG_HEADER)
     endif()
   endforeach()
   get_target_property(_daran_defs daran_ascii INTERFACE_COMPILE_DEFINITIONS)
-  list(TRANSFORM _daran_defs REPLACE "^DARAN_CONFIG_HEADER=.*$"
-       "$<BUILD_INTERFACE:DARAN_CONFIG_HEADER=${DARAN_CONFIG_HEADER}>;$<INSTALL_INTERFACE:DARAN_CONFIG_HEADER=${_daran_config_header_name}>")
+  # The build tree keeps the definition src/CMakeLists.txt made; only the
+  # installed one changes.
+  list(TRANSFORM _daran_defs REPLACE "^DARAN_CONFIG_HEADER=(.*)$"
+       "$<BUILD_INTERFACE:DARAN_CONFIG_HEADER=\\1>;$<INSTALL_INTERFACE:DARAN_CONFIG_HEADER=${_daran_config_header_name}>")
   set_property(TARGET daran_ascii PROPERTY INTERFACE_COMPILE_DEFINITIONS "${_daran_defs}")
   install(FILES "${_daran_config_header_path}" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 endif()
