@@ -215,7 +215,6 @@ void daran_sim_model_boot(daran_sim_model_t *m)
     m->sag_left_s = 0.0f;
     m->torque_nm = 0.0f;
     m->torque_cmd = 0.0f;
-    m->ext_torque_nm = 0.0f;
     m->error = 0u;
     m->fet_error = 0u;
     m->motor_error = 0u;
