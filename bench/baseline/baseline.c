@@ -133,7 +133,8 @@ static int decimal_chars(const char *text)
         return 0;
     }
     for (const char *p = text; *p != '\0'; p++) {
-        if (strchr("0123456789+-.eE", *p) == NULL) {
+        char c = *p;
+        if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E')) {
             return 0;
         }
     }

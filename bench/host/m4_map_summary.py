@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""Summarise the three Cortex-M4 images m4_size.sh links: flash (text + data)
+and RAM (data + bss) from arm-none-eabi-size, each minus the empty image,
+and the flash bytes each image takes from every input, read from its link
+map (only sections the link kept: --gc-sections leaves the rest in the map's
+"Discarded input sections" part, which is skipped)."""
+import os
+import re
+import subprocess
+import sys
+
+out = sys.argv[1] if len(sys.argv) > 1 else "build/bench/m4"
+
+
+def size(elf):
+    text = subprocess.run(["arm-none-eabi-size", "-A", elf], check=True,
+                          stdout=subprocess.PIPE).stdout.decode()
+    flash = ram = 0
+    for line in text.splitlines():
+        parts = line.split()
+        if len(parts) < 3 or not parts[1].isdigit():
+            continue
+        name, n, addr = parts[0], int(parts[1]), int(parts[2])
+        if name.startswith(".debug") or name in (".comment", ".ARM.attributes") or addr == 0 and name != ".text":
+            continue
+        if name in (".data",):
+            flash += n
+            ram += n
+        elif name in (".bss", ".heap", ".stack", ".stack_dummy") or name.startswith(".bss"):
+            ram += n
+        else:
+            flash += n
+    return flash, ram
+
+
+SECTION = re.compile(r"^ (\.\S+)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+)$")
+
+
+def by_origin(mapfile, members_by_archive=None):
+    """Bytes of kept input sections per origin: the object or archive."""
+    if members_by_archive is None:
+        members_by_archive = {}
+    totals = {}
+    kept = False
+    pending = None
+    with open(mapfile) as f:
+        for raw in f:
+            line = raw.rstrip("\n")
+            if line.startswith("Linker script and memory map"):
+                kept = True
+                continue
+            if not kept:
+                continue
+            if pending is not None and re.match(r"^\s+0x[0-9a-f]+\s+0x[0-9a-f]+\s+\S+$", line):
+                line = " " + pending + line
+                pending = None
+            elif re.match(r"^ \.\S+$", line):
+                pending = line.strip()
+                continue
+            else:
+                pending = None
+            m = SECTION.match(line)
+            if not m:
+                continue
+            section, addr, n, origin = m.group(1) or "", int(m.group(2), 16), int(m.group(3), 16), m.group(4)
+            if n == 0 or section.startswith((".debug", ".comment", ".ARM.attributes")):
+                continue
+            if section.startswith((".bss", "COMMON", ".heap", ".stack", ".noinit")):
+                continue  # RAM only: this table is about flash
+            if addr == 0:
+                continue
+            name = os.path.basename(origin)
+            if "(" in name:
+                archive, member = name.split("(", 1)
+                members = members_by_archive.setdefault(archive, {})
+                member = member.rstrip(")")
+                members[member] = members.get(member, 0) + n
+                name = archive
+            elif "/obj/" in origin:
+                name = origin.split("/obj/")[1].split("/")[0]
+                name = "main" if name.startswith("main-") else name
+            else:
+                name = "startup (" + name + ")" if name.startswith("crt") else name
+            totals[name] = totals.get(name, 0) + n
+    return totals
+
+
+rows = {}
+for image in ("empty", "daran", "daran-nohelp", "baseline"):
+    rows[image] = size(os.path.join(out, image + ".elf"))
+base_flash, base_ram = rows["empty"]
+print("| image | flash (text+data) | RAM (data+bss) | flash over empty | RAM over empty |")
+print("|---|---:|---:|---:|---:|")
+for image in ("empty", "daran", "daran-nohelp", "baseline"):
+    flash, ram = rows[image]
+    print("| %s | %d | %d | %d | %d |" % (image, flash, ram, flash - base_flash, ram - base_ram))
+print()
+print("Flash bytes kept per input (core = src/, baseline = bench/baseline/, main = m4_main.c):")
+print()
+origins = set()
+parts = {}
+members = {}
+for image in ("empty", "daran", "baseline"):
+    members[image] = {}
+    parts[image] = by_origin(os.path.join(out, image + ".map"), members[image])
+    origins |= set(parts[image])
+print("| input | empty | daran | baseline |")
+print("|---|---:|---:|---:|")
+for origin in sorted(origins):
+    print("| %s | %s |" % (origin, " | ".join(str(parts[i].get(origin, 0)) for i in ("empty", "daran", "baseline"))))
+for image in ("daran", "baseline"):
+    print()
+    print("Library members in the %s image beyond the empty one (flash bytes):" % image)
+    print()
+    extra = []
+    for archive, found in members[image].items():
+        for member, n in found.items():
+            n -= members["empty"].get(archive, {}).get(member, 0)
+            if n > 0:
+                extra.append((n, archive, member))
+    extra.sort(reverse=True)
+    if not extra:
+        print("- none")
+    shown = extra[:12]
+    for n, archive, member in shown:
+        print("- %s(%s): %d" % (archive, member, n))
+    if len(extra) > len(shown):
+        print("- %d more members: %d" % (len(extra) - len(shown), sum(e[0] for e in extra[len(shown):])))

@@ -1,0 +1,60 @@
+#!/bin/sh
+# Flash and RAM on Cortex-M4F: daran-ascii against the baseline yardstick,
+# each linked into the minimal image of m4_main.c with newlib-nano and
+# --gc-sections, minus the same image without a parser.
+#
+#   bench/host/m4_size.sh [OUT_DIR]      (default build/bench/m4)
+#
+# Prints one table row per image and, from the link maps, how many bytes of
+# each image come from the core/baseline, libc (newlib-nano), libm and libgcc.
+set -eu
+cd "$(dirname "$0")/../.."
+out=${1:-build/bench/m4}
+mkdir -p "$out"
+cc=arm-none-eabi-gcc
+cpu="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
+cflags="$cpu -Os -std=c99 -ffunction-sections -fdata-sections -fno-math-errno -Iinclude -Isrc -Ibench/baseline"
+ldflags="$cpu --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections"
+core_sources=$(sed -n 's/^  \([a-z_0-9]*\.c\)$/src\/\1/p' src/CMakeLists.txt)
+
+# Objects first, one folder per part, so the link maps say where each byte came from.
+compile() { # part parser-number sources...
+  part=$1 parser=$2
+  shift 2
+  mkdir -p "$out/obj/$part"
+  for source in "$@"; do
+    # shellcheck disable=SC2086
+    $cc $cflags -DBENCH_PARSER="$parser" -DDARAN_VERSION_STRING='"bench"' -c "$source" \
+      -o "$out/obj/$part/$(basename "$source" .c).o"
+  done
+}
+link() { # image extra-flags parts...
+  image=$1 extra=$2
+  shift 2
+  objects=""
+  for part in "$@"; do
+    objects="$objects $out/obj/$part/*.o"
+  done
+  # shellcheck disable=SC2086
+  $cc $objects $ldflags $extra -Wl,-Map="$out/$image.map" -lm -o "$out/$image.elf"
+}
+
+rm -rf "$out/obj"
+compile main-empty 0 bench/host/m4_main.c
+compile main-daran 1 bench/host/m4_main.c
+compile main-baseline 2 bench/host/m4_main.c
+# shellcheck disable=SC2086
+compile core 1 $core_sources
+compile baseline 2 bench/baseline/baseline.c
+# The same core without the `h` help strings (DARAN_ENABLE_HELP=0).
+cflags="$cflags -DDARAN_ENABLE_HELP=0"
+# shellcheck disable=SC2086
+compile core-nohelp 1 $core_sources
+
+link empty "" main-empty
+link daran "" main-daran core
+link daran-nohelp "" main-daran core-nohelp
+# A firmware that scans and prints floats with newlib-nano must ask for it.
+link baseline "-u _printf_float -u _scanf_float" main-baseline baseline
+
+python3 bench/host/m4_map_summary.py "$out"

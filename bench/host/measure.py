@@ -1,0 +1,241 @@
+#!/usr/bin/env python3
+"""Every host figure of docs/performance.md, counted with callgrind.
+
+    measure.py --driver BUILD/bench/host/daran_bench_driver --out DIR
+               [--clang-driver PATH] [--reference bench/host/reference.txt]
+
+Writes DIR/host.md (the tables), DIR/families.dat (the chart's data) and,
+with --reference, the committed reference figure(s) of the CTest guard.
+Instruction counts (Ir) are deterministic: the same binary on the same stream
+gives the same count on every run.
+
+Definitions
+  core          instructions inside the parser's entry point and everything it
+                calls (HAL stubs and reply sink included), via callgrind
+                --toggle-collect=daran_process_line / baseline_process_line
+                (ours-poll: daran_rx_write + daran_poll), divided by lines
+  whole program (Ir of the whole driver run - Ir of the same run in mode
+                `none`, which reads and splits the stream but parses nothing)
+                / lines: what each line costs the program, libc included
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+STREAMS = os.path.join(ROOT, "bench", "streams")
+FAMILIES = [
+    ("t", "t"), ("t_cs", "t + checksum"), ("q", "q"), ("p", "p"), ("v", "v"), ("c", "c"),
+    ("d", "d"), ("ms_mq", "ms/mq"), ("r", "r"), ("w", "w"), ("f", "f"), ("g", "g"), ("e", "e"),
+    ("errors", "errors"),
+]
+SESSIONS = ["reference", "tuning", "bus"]
+ENTRY = {"ours": ["daran_process_line"], "ours-poll": ["daran_rx_write", "daran_poll"],
+         "baseline": ["baseline_process_line"]}
+LOOKUP = {"ours": ["daran_find_property"], "baseline": ["baseline_find_property"]}
+
+
+def callgrind(driver, args, toggles=()):
+    with tempfile.NamedTemporaryFile(prefix="cg.", delete=False) as f:
+        out = f.name
+    try:
+        cmd = ["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out]
+        cmd += ["--toggle-collect=" + t for t in toggles]
+        cmd += [driver] + args
+        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        with open(out) as f:
+            for line in f:
+                if line.startswith("totals:"):
+                    return int(line.split()[1])
+        raise RuntimeError("no totals in callgrind output of %s" % " ".join(cmd))
+    finally:
+        os.unlink(out)
+
+
+def core(driver, mode, args, toggles=None):
+    return callgrind(driver, [mode] + args, toggles or ENTRY[mode])
+
+
+def lines_in(path):
+    with open(path, "rb") as f:
+        return sum(1 for _ in f)
+
+
+def fmt(x):
+    return "{:,}".format(int(round(x)))
+
+
+def ratio(a, b):
+    return "%.1fx" % (b / a) if a else "-"
+
+
+def properties():
+    """(scope, path) in list order, from the X-macro list."""
+    text = open(os.path.join(ROOT, "include", "daran_properties.h")).read()
+    return re.findall(r'X\(\w+,\s*"([^"]+)",\s*(SYSTEM|AXIS)', text)
+
+
+def families_table(driver, out, md):
+    md.append("| family | lines | core: daran-ascii | core: baseline | core ratio | "
+              "whole program: daran-ascii | whole program: baseline | whole ratio |")
+    md.append("|---|---:|---:|---:|---:|---:|---:|---:|")
+    data = []
+    for name, label in FAMILIES:
+        path = os.path.join(STREAMS, "families", name + ".txt")
+        n = lines_in(path)
+        ours = core(driver, "ours", [path]) / n
+        base = core(driver, "baseline", [path]) / n
+        none = callgrind(driver, ["none", path])
+        ours_whole = (callgrind(driver, ["ours", path]) - none) / n
+        base_whole = (callgrind(driver, ["baseline", path]) - none) / n
+        md.append("| %s | %d | %s | %s | %s | %s | %s | %s |" % (
+            label, n, fmt(ours), fmt(base), ratio(ours, base), fmt(ours_whole), fmt(base_whole),
+            ratio(ours_whole, base_whole)))
+        data.append((label, ours, base))
+        print("  family %-14s ours %7.0f baseline %7.0f" % (label, ours, base), flush=True)
+    with open(os.path.join(out, "families.dat"), "w") as f:
+        f.write("# family  daran-ascii  baseline   (core instructions per line)\n")
+        for label, ours, base in data:
+            f.write('"%s" %.0f %.0f\n' % (label, ours, base))
+
+
+def sessions_table(driver, md):
+    md.append("| stream | lines | core: daran_process_line | core: byte path (rx_write + poll) | "
+              "core: baseline | ratio | whole program incl. start-up: daran-ascii | baseline |")
+    md.append("|---|---:|---:|---:|---:|---:|---:|---:|")
+    figures = {}
+    for name in SESSIONS:
+        path = os.path.join(STREAMS, name + ".txt")
+        n = lines_in(path)
+        ours_total = core(driver, "ours", [path])
+        ours = ours_total / n
+        poll = core(driver, "ours-poll", [path]) / n
+        base = core(driver, "baseline", [path]) / n
+        ours_whole = callgrind(driver, ["ours", path]) / n
+        base_whole = callgrind(driver, ["baseline", path]) / n
+        figures[name] = ours_total
+        md.append("| %s | %d | %s | %s | %s | %s | %s | %s |" % (
+            name + ".txt", n, fmt(ours), fmt(poll), fmt(base), ratio(ours, base), fmt(ours_whole),
+            fmt(base_whole)))
+        print("  stream %-10s ours %7.0f poll %7.0f baseline %7.0f" % (name, ours, poll, base),
+              flush=True)
+    return figures
+
+
+def lookup_table(driver, md):
+    props = properties()
+    axis = [p for p, s in props if s == "AXIS"]
+    system = [p for p, s in props if s == "SYSTEM"]
+    picks = [("system, first", system[0], "r %s 1" % system[0]),
+             ("system, last", system[-1], "r %s 1" % system[-1]),
+             ("axis, first", axis[0], "r axis1." + axis[0]),
+             ("axis, middle", axis[len(axis) // 2], "r axis1." + axis[len(axis) // 2]),
+             ("axis, last", axis[-1], "r axis1." + axis[-1]),
+             ("axis, unknown", "output_shaft.no_such_thing", "r axis1.output_shaft.no_such_thing")]
+    repeat = 100
+    md.append("Property table: %d rows (%d system, %d axis), in the order of "
+              "include/daran_properties.h. Lookup = the table search alone, counted inside "
+              "daran_find_property / baseline_find_property while the `r` line is processed; "
+              "line = the whole `r` request (core)." % (len(props), len(system), len(axis)))
+    md.append("")
+    md.append("| property | path | lookup: daran-ascii | lookup: baseline | `r` line: daran-ascii | "
+              "`r` line: baseline |")
+    md.append("|---|---|---:|---:|---:|---:|")
+    for label, name, line in picks:
+        args = ["--repeat", str(repeat), "--line", line]
+        ours = core(driver, "ours", args, LOOKUP["ours"]) / repeat
+        base = core(driver, "baseline", args, LOOKUP["baseline"]) / repeat
+        ours_line = core(driver, "ours", ["--repeat", str(repeat), "--line", line]) / repeat
+        base_line = core(driver, "baseline", ["--repeat", str(repeat), "--line", line]) / repeat
+        md.append("| %s | `%s` | %s | %s | %s | %s |" % (
+            label, name, fmt(ours), fmt(base), fmt(ours_line), fmt(base_line)))
+        print("  lookup %-14s ours %5.0f baseline %5.0f" % (label, ours, base), flush=True)
+
+
+def length_table(driver, md):
+    repeat = 100
+    md.append("| line | length | daran-ascii | baseline |")
+    md.append("|---|---:|---:|---:|")
+    for kind in ("blanks", "digits"):
+        for k in (0, 16, 32, 64, 96, 120):
+            line = "t 1 10" + " " * k if kind == "blanks" else "t 1 10." + "0" * k
+            ours = core(driver, "ours", ["--repeat", str(repeat), "--line", line]) / repeat
+            base = core(driver, "baseline", ["--repeat", str(repeat), "--line", line]) / repeat
+            shown = ("`t 1 10` + %d blanks" % k) if kind == "blanks" else ("`t 1 10.` + %d zeros" % k)
+            md.append("| %s | %d | %s | %s |" % (shown, len(line), fmt(ours), fmt(base)))
+        print("  length %-7s done" % kind, flush=True)
+
+
+def write_reference(path, figures):
+    lines = ["# Core instructions (callgrind Ir inside daran_process_line) for the whole of",
+             "# bench/streams/reference.txt, per compiler (gcc/clang -O2, no sanitizers).",
+             "# bench_core_instructions (CTest, label bench) fails above +10%.",
+             "# Refresh with: bench/host/run_all.sh --reference"]
+    for key, value in sorted(figures.items()):
+        lines.append("%s %d" % (key, value))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("wrote", path)
+
+
+def compiler_key(driver):
+    """GNU-12 / Clang-14, read from the driver's .comment section."""
+    text = subprocess.run(["readelf", "-p", ".comment", driver], stdout=subprocess.PIPE,
+                          stderr=subprocess.DEVNULL).stdout.decode(errors="replace")
+    m = re.search(r"clang version (\d+)", text)
+    if m:
+        return "Clang-" + m.group(1)
+    m = re.search(r"GCC: \([^)]*\) (\d+)", text)
+    return "GNU-" + m.group(1) if m else "unknown"
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--driver", required=True)
+    ap.add_argument("--clang-driver")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--reference")
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    md = ["<!-- generated by bench/host/measure.py (bench/host/run_all.sh) -->", ""]
+    md.append("### Per command family (bench/streams/families/*.txt, 1000 lines each)")
+    md.append("")
+    md.append("Instructions per line. Core = the parser's entry point and all it calls; whole "
+              "program = extra instructions the driver program executes per line (stream "
+              "reading excluded).")
+    md.append("")
+    families_table(args.driver, args.out, md)
+    md.append("")
+    md.append("### Recorded sessions (a third of the lines checksummed)")
+    md.append("")
+    figures = sessions_table(args.driver, md)
+    md.append("")
+    md.append("### Scaling: property lookup")
+    md.append("")
+    lookup_table(args.driver, md)
+    md.append("")
+    md.append("### Scaling: line length (core instructions per line)")
+    md.append("")
+    length_table(args.driver, md)
+    md.append("")
+    refs = {compiler_key(args.driver): figures["reference"]}
+    if args.clang_driver:
+        n = lines_in(os.path.join(STREAMS, "reference.txt"))
+        total = core(args.clang_driver, "ours", [os.path.join(STREAMS, "reference.txt")])
+        refs[compiler_key(args.clang_driver)] = total
+        md.append("clang-14 -O2 build of the same core on reference.txt: %s instructions per line."
+                  % fmt(total / n))
+        md.append("")
+    if args.reference:
+        write_reference(args.reference, refs)
+    with open(os.path.join(args.out, "host.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+    print("wrote", os.path.join(args.out, "host.md"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

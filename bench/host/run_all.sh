@@ -1,0 +1,53 @@
+#!/bin/sh
+# Reproduce every host benchmark figure in docs/performance.md.
+#
+#   bench/host/run_all.sh               measure everything
+#   bench/host/run_all.sh --reference   also refresh bench/host/reference.txt
+#
+# Needs gcc, valgrind, python3, gnuplot, arm-none-eabi-gcc (clang-14 optional).
+# Builds the benchmark driver (gcc and clang-14, -O2, no sanitizers) in
+# build/bench/, checks that daran-ascii and the baseline make the same HAL
+# calls on every stream, counts instructions with callgrind, draws the chart
+# and links the Cortex-M4 images. Results: build/bench/results/{host,m4}.md,
+# chart: docs/bench-host-instructions.png. About 3 minutes on one core.
+set -eu
+cd "$(dirname "$0")/../.."
+build=build/bench
+results=$build/results
+mkdir -p "$results"
+
+configure() { # dir compiler
+  cmake -S . -B "$1" -G Ninja -DCMAKE_C_COMPILER="$2" -DCMAKE_BUILD_TYPE=Release \
+    -DDARAN_BUILD_TESTS=OFF -DDARAN_BUILD_SIM=OFF -DDARAN_BUILD_DEMO=OFF >/dev/null
+  cmake --build "$1" --target daran_bench_driver -j2 >/dev/null
+}
+
+echo "== build the driver (gcc -O2)"
+configure "$build/gcc" gcc
+driver=$build/gcc/bench/host/daran_bench_driver
+clang_args=""
+if command -v clang-14 >/dev/null 2>&1; then
+  echo "== build the driver (clang-14 -O2)"
+  configure "$build/clang" clang-14
+  clang_args="--clang-driver $build/clang/bench/host/daran_bench_driver"
+fi
+
+echo "== same HAL calls and replies from both parsers"
+python3 bench/host/compare_traces.py "$driver" bench/streams/*.txt bench/streams/families/*.txt
+
+echo "== callgrind instruction counts"
+reference_args=""
+if [ "${1:-}" = "--reference" ]; then
+  reference_args="--reference bench/host/reference.txt"
+fi
+# shellcheck disable=SC2086
+nice -n 10 python3 bench/host/measure.py --driver "$driver" $clang_args --out "$results" $reference_args
+
+echo "== chart"
+gnuplot -e "datafile='$results/families.dat'; outfile='docs/bench-host-instructions.png'" \
+  bench/host/families.gp
+
+echo "== Cortex-M4 flash and RAM"
+sh bench/host/m4_size.sh "$build/m4" | tee "$results/m4.md"
+
+echo "== done: $results/host.md, $results/m4.md, docs/bench-host-instructions.png"

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# CI step: the `release` workflow preset (gcc -O2, no sanitizers: builds and
+# runs every test), which includes the benchmark guards labelled `bench`:
+#   bench_core_instructions                 the core's callgrind instruction count on
+#                                           bench/streams/reference.txt stays within
+#                                           +10% of bench/host/reference.txt
+#   bench_baseline_makes_the_same_hal_calls the baseline yardstick still agrees with
+#                                           daran-ascii on every recorded stream
+# Installs valgrind when missing (without it the guard would only be skipped).
+# Budget: 2 minutes.
+set -uo pipefail
+cd "$(dirname "$0")/../.." || exit 1
+start=$SECONDS
+
+if ! command -v valgrind >/dev/null 2>&1; then
+  echo "20-bench: installing valgrind"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  if ! { $SUDO apt-get update -qq && $SUDO apt-get install -y -qq --no-install-recommends valgrind >/dev/null; }; then
+    echo "20-bench: FAILED to install valgrind"
+    exit 1
+  fi
+fi
+
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+if ! cmake --workflow --preset release 2>&1 | tee "$log"; then
+  echo "20-bench: FAILED (release workflow; see the output above) after $((SECONDS - start)) s"
+  exit 1
+fi
+# The guard must have run, not been skipped.
+if ! grep -Eq 'bench_core_instructions \.+ +Passed' "$log"; then
+  echo "20-bench: FAILED: bench_core_instructions did not run and pass in the release preset"
+  exit 1
+fi
+echo "20-bench: release preset passed, bench guards included, in $((SECONDS - start)) s"
