@@ -1,0 +1,118 @@
+/* Instruction-count image (daran-perf.elf): one protocol line of each
+ * command family through daran_rx_write() + daran_poll(), with a marker
+ * call after each. tools/qemu-insn-count counts the instructions between
+ * markers under QEMU; measure_insns.py turns them into the table in
+ * docs/performance.md. The HAL here does no work (stored values, no
+ * model), so the counts are the core's alone; replies go to a sink that
+ * drops them (no UART time). Labels go out on UART0 in order. */
+#include <string.h>
+
+#include "board.h"
+#include "daran_drive.h"
+
+typedef struct perf_line {
+    const char *label;
+    const char *text;
+} perf_line_t;
+
+static const perf_line_t lines[] = {
+    {"t", "t 1 10 0 25\n"},
+    {"t with checksum", "t 1 10 0 25 *83\n"},
+    {"t, position only", "t 1 12.5\n"},
+    {"q", "q 1 50.0 7.5 2.5\n"},
+    {"p", "p 1 10 5 3\n"},
+    {"v (ramp)", "v 1 12.5 2.5 2\n"},
+    {"c (ramp)", "c 1 0.1 0.02 6\n"},
+    {"d", "d 1 10 0 0.5 0.1 0.01\n"},
+    {"f", "f 1\n"},
+    {"f with checksum", "f 1 *87\n"},
+    {"r axis property", "r axis1.output_shaft.pos_setpoint\n"},
+    {"r system property", "r config.uart_baudrate 1\n"},
+    {"w float property", "w axis1.controller.config.pos_gain 20.5\n"},
+    {"w integer property", "w config.uart_baudrate 9600 1\n"},
+    {"ms", "ms 1 120 5 10\n"},
+    {"mq (after ms)", "mq 1 1\n"},
+    {"ss", "ss 1\n"},
+    {"line for another id", "t 2 10 0 25\n"},
+    {"error: unknown command", "x 1\n"},
+    {"error: invalid value", "t 1 1x0\n"},
+    {"error: checksum mismatch", "t 1 10 0 25 *84\n"},
+    {"blank line", "\n"},
+};
+
+static daran_value_t values[DARAN_PROP_COUNT];
+
+static daran_result_t perf_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+{
+    (void)ctx;
+    *out = values[prop];
+    return DARAN_OK;
+}
+
+static daran_result_t perf_set(void *ctx, daran_prop_t prop, daran_value_t value)
+{
+    (void)ctx;
+    values[prop] = value;
+    return DARAN_OK;
+}
+
+static daran_result_t perf_move(void *ctx, const daran_move_t *move)
+{
+    (void)ctx;
+    (void)move;
+    return DARAN_OK;
+}
+
+static daran_result_t perf_action(void *ctx, daran_action_t action)
+{
+    (void)ctx;
+    (void)action;
+    return DARAN_OK;
+}
+
+static const daran_hal_t perf_hal = {perf_get, perf_set, perf_move, perf_action};
+
+static void drop_reply(void *ctx, const char *line, size_t len)
+{
+    (void)ctx;
+    (void)line;
+    (void)len;
+}
+
+/* The plugin watches this function's entry. */
+void daran_perf_mark(void) __attribute__((noinline));
+void daran_perf_mark(void)
+{
+    __asm volatile("" ::: "memory");
+}
+
+static daran_drive_t drive;
+static size_t lengths[sizeof lines / sizeof lines[0]];
+
+int main(void)
+{
+    board_uart0_init(115200u);
+    values[DARAN_PROP_CAN_NODE_ID].u32 = 1u;
+    values[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
+    values[DARAN_PROP_UART_BAUDRATE].u32 = 115200u;
+    if (daran_init(&drive, &perf_hal, NULL, drop_reply, NULL) != DARAN_OK) {
+        board_exit(1);
+    }
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        lengths[i] = strlen(lines[i].text); /* outside the measured intervals */
+    }
+    (void)board_irq_save(); /* nothing may run between markers but the line */
+    daran_perf_mark();
+    daran_perf_mark(); /* empty interval: the marker's own cost */
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        (void)daran_rx_write(&drive, lines[i].text, lengths[i]);
+        (void)daran_poll(&drive);
+        daran_perf_mark();
+    }
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        board_uart0_write(lines[i].label, strlen(lines[i].label));
+        board_uart0_write("\t", 1u);
+        board_uart0_write(lines[i].text, strlen(lines[i].text));
+    }
+    board_exit(0);
+}

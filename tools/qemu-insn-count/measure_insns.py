@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""Instructions per protocol line on the Cortex-M4, counted under QEMU.
+
+Builds the counting plugin (insn_count.c, host C compiler) if needed, runs
+daran-perf.elf (tests/target/perf_main.c) with it and prints a Markdown table
+of instructions per line, the marker's own cost subtracted.
+
+  measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf
+                   [--nm arm-none-eabi-nm] [--profile LABEL] [--max-t-checksum N]
+
+--profile LABEL   also break that line's count down per function
+--max-t-checksum  exit 1 when "t with checksum" takes more than N instructions
+"""
+import argparse
+import bisect
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+QEMU = ["qemu-system-arm", "-M", "mps2-an386", "-nographic", "-monitor", "none",
+        "-serial", "stdio", "-semihosting-config", "enable=on,target=native"]
+
+
+def build_plugin(out_dir):
+    src = os.path.join(HERE, "insn_count.c")
+    lib = os.path.join(out_dir, "libinsn_count.so")
+    if not os.path.exists(lib) or os.path.getmtime(lib) < os.path.getmtime(src):
+        cc = os.environ.get("CC", "cc")
+        subprocess.run([cc, "-shared", "-fPIC", "-O2", "-fvisibility=hidden", "-o", lib, src],
+                       check=True)
+    return lib
+
+
+def symbols(nm, elf):
+    funcs = []
+    for line in subprocess.run([nm, "-S", "--defined-only", elf], check=True,
+                               stdout=subprocess.PIPE, text=True).stdout.splitlines():
+        parts = line.split()
+        if len(parts) == 4 and parts[2] in "tTwW":
+            funcs.append((int(parts[0], 16) & ~1, int(parts[1], 16), parts[3]))
+    funcs.sort()
+    return funcs
+
+
+def run(elf, plugin, mark, profile=None):
+    with tempfile.TemporaryDirectory() as tmp:
+        log = os.path.join(tmp, "plugin.log")
+        arg = f"{plugin},mark=0x{mark:x}" + (f",profile={profile}" if profile is not None else "")
+        proc = subprocess.run(QEMU + ["-kernel", elf, "-plugin", arg, "-d", "plugin", "-D", log],
+                              stdout=subprocess.PIPE, timeout=60, check=True)
+        with open(log) as f:
+            out = f.read().splitlines()
+    labels = [l.split("\t")[0] for l in proc.stdout.decode().splitlines() if "\t" in l]
+    texts = [l.split("\t")[1] for l in proc.stdout.decode().splitlines() if "\t" in l]
+    marks = [int(l.split()[2]) for l in out if l.startswith("mark ")]
+    blocks = [(int(l.split()[1], 16), int(l.split()[2])) for l in out if l.startswith("block ")]
+    return labels, texts, marks, blocks
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--elf", required=True)
+    ap.add_argument("--nm", default="arm-none-eabi-nm")
+    ap.add_argument("--plugin-dir", default=None)
+    ap.add_argument("--profile", default=None)
+    ap.add_argument("--max-t-checksum", type=int, default=None)
+    opt = ap.parse_args()
+
+    plugin = build_plugin(opt.plugin_dir or os.path.dirname(os.path.abspath(opt.elf)))
+    funcs = symbols(opt.nm, opt.elf)
+    mark = next(a for a, _, n in funcs if n == "daran_perf_mark")
+    labels, texts, marks, _ = run(opt.elf, plugin, mark)
+    # marks[0]: start-up; marks[1]: empty interval (marker cost); then one per line
+    base = marks[1]
+    counts = [m - base for m in marks[2:2 + len(labels)]]
+    print("| line | example | instructions |")
+    print("|---|---|---:|")
+    for label, text, n in zip(labels, texts, counts):
+        print(f"| {label} | `{text.rstrip()}` | {n} |")
+    status = 0
+    if opt.max_t_checksum is not None:
+        n = counts[labels.index("t with checksum")]
+        verdict = "within" if n <= opt.max_t_checksum else "OVER"
+        print(f"\n`t` with checksum: {n} instructions ({verdict} the {opt.max_t_checksum} target)")
+        status = 0 if n <= opt.max_t_checksum else 1
+    if opt.profile:
+        k = labels.index(opt.profile) + 2
+        _, _, _, blocks = run(opt.elf, plugin, mark, profile=k)
+        starts = [a for a, _, _ in funcs]
+        per_fn = {}
+        for addr, n in blocks:
+            i = bisect.bisect_right(starts, addr) - 1
+            name = funcs[i][2] if i >= 0 and addr < funcs[i][0] + max(funcs[i][1], 1) else hex(addr)
+            per_fn[name] = per_fn.get(name, 0) + n
+        print(f"\nPer function, line `{opt.profile}`:\n")
+        print("| function | instructions |")
+        print("|---|---:|")
+        for name, n in sorted(per_fn.items(), key=lambda kv: -kv[1]):
+            print(f"| {name} | {n} |")
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())
