@@ -1,0 +1,30 @@
+#!/bin/sh
+# CI step: the Cortex-M4 build (arm-none-eabi-gcc -Os), the example firmware
+# and its tests under QEMU mps2-an386: self-test, transcripts, budgets.
+# Budget: under 3 minutes on the 2-core CI machine.
+set -eu
+cd "$(dirname "$0")/../.."
+
+missing=""
+command -v arm-none-eabi-gcc >/dev/null 2>&1 || missing="$missing gcc-arm-none-eabi"
+[ -e /usr/lib/arm-none-eabi/newlib/thumb/v7e-m+fp/hard/libc_nano.a ] ||
+    missing="$missing libnewlib-arm-none-eabi"
+command -v qemu-system-arm >/dev/null 2>&1 || missing="$missing qemu-system-arm"
+if [ -n "$missing" ]; then
+    echo "30-cortex-m4: installing$missing"
+    apt-get update -qq
+    # shellcheck disable=SC2086
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing
+fi
+
+start=$(date +%s)
+status=0
+cmake --workflow --preset cortex-m4 || status=$?
+elapsed=$(( $(date +%s) - start ))
+if [ "$status" -eq 0 ]; then
+    echo "30-cortex-m4: PASS (firmware built, tests under QEMU and budgets passed) in ${elapsed}s"
+else
+    echo "30-cortex-m4: FAIL (exit $status) in ${elapsed}s: see the CTest output above" \
+         "(budget_* tests print the measured figure against the limit)"
+fi
+exit "$status"
