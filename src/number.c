@@ -106,7 +106,7 @@ static int32_t floor_shift(int32_t x, unsigned n)
     return (int32_t)biased - (int32_t)(0x40000000L >> n);
 }
 
-/* floor(log2(10^x)) for |x| <= 70 (checked against exact values by the tests). */
+/* floor(log2(10^x)) for |x| <= 70 (bench/number/gen_pow10_table.py checks it). */
 static int32_t floor_log2_pow10(int32_t x)
 {
     return floor_shift(x * INT32_C(1741647), 19);
@@ -464,6 +464,8 @@ static uint32_t shortest_digits(uint32_t exf, uint32_t frac, int32_t *k_out)
     uint32_t c = exf ? frac | 0x800000u : frac;
     int32_t q = exf ? (int32_t)exf - 150 : -149;
     int irregular = frac == 0 && exf > 1; /* the gap below is half the gap above */
+    /* floor(log10(2^q)), or floor(log10(3/4 * 2^q)): exact for q = -149..104 (checked
+     * by bench/number/gen_pow10_table.py) */
     int32_t k = floor_shift(q * INT32_C(1262611) - (irregular ? INT32_C(524031) : 0), 22);
     unsigned h = (unsigned)(q + floor_log2_pow10(-k) + 1); /* 1..4 */
     uint64_t g = daran_pow10_hi[-k - DARAN_POW10_MIN] + 1u;

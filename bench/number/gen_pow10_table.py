@@ -3,7 +3,8 @@
 
 Entry q (q = -64..45) is floor(10^q * 2^(63 - floor(log2(10^q)))): the 64 leading
 bits of 10^q, truncated, with bit 63 set. Parsing uses q = -64..38, printing uses
-10^-k for k = -45..31. Run: python3 bench/number/gen_pow10_table.py"""
+10^-k for k = -45..31. Also checks the integer log formulas number.c uses.
+Run: python3 bench/number/gen_pow10_table.py"""
 from fractions import Fraction
 
 LO, HI = -64, 45
@@ -26,7 +27,27 @@ def entry(q):
     return t
 
 
+def floor_log10(x):
+    n = 0
+    while Fraction(10) ** (n + 1) <= x:
+        n += 1
+    while Fraction(10) ** n > x:
+        n -= 1
+    return n
+
+
+def check_log_formulas():
+    """The integer formulas of src/number.c, against exact values."""
+    for x in range(-70, 71):
+        assert (x * 1741647) >> 19 == floor_log2(Fraction(10) ** x), x
+    for q in range(-149, 105):
+        two_q = Fraction(2) ** q
+        assert (q * 1262611) >> 22 == floor_log10(two_q), q
+        assert (q * 1262611 - 524031) >> 22 == floor_log10(Fraction(3, 4) * two_q), q
+
+
 def main():
+    check_log_formulas()
     vals = [entry(q) for q in range(LO, HI + 1)]
     print("static const uint64_t daran_pow10_hi[%d] = {" % len(vals))
     for i in range(0, len(vals), 3):
