@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""Writes the seed corpus of the fuzz harnesses into tests/corpus/<harness>/.
+
+Seeds come from the spec's worked examples, the vendor recordings (time column
+stripped), the simulator transcripts, and generated sessions: a pick-and-place
+arm streaming `t` at 500 Hz, a synchronised multi-drive move, an r/w tuning
+session. Each harness has its own input layout (see the harness's first
+comment); this script adds the setup bytes. Run from anywhere:
+    python3 tests/fuzz/gen_corpus.py [--shared /work/shared]
+then minimise with libFuzzer -merge=1 (tools/ci.d/40-fuzz.sh documents how).
+"""
+import argparse
+import hashlib
+import math
+import os
+import re
+import struct
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def spec_examples(shared):
+    text = open(os.path.join(shared, "spec", "protocol.md"), encoding="utf-8").read()
+    block = text.split("## 9. Worked examples")[1].split("```")[1]
+    lines = []
+    for row in block.strip("\n").split("\n"):
+        lines += [c.strip() for c in re.split(r" {2,}", row) if c.strip()]
+    # "All must be accepted exactly as written": also with the vendor's trailing space.
+    return lines + [l + " " for l in lines if "*" not in l]
+
+
+def recordings(shared):
+    out = {}
+    d = os.path.join(shared, "recordings")
+    for name in sorted(os.listdir(d)):
+        lines = []
+        for row in open(os.path.join(d, name), encoding="utf-8"):
+            row = row.rstrip("\n")
+            if row.startswith("#") or "\t" not in row:
+                continue
+            lines.append(row.split("\t", 1)[1])
+        out[name.rsplit(".", 1)[0]] = lines
+    return out
+
+
+def transcripts():
+    out = {}
+    d = os.path.join(ROOT, "tests", "transcripts")
+    if not os.path.isdir(d):
+        return out
+    for name in sorted(os.listdir(d)):
+        if name.endswith(".txt"):
+            out[name[:-4]] = open(os.path.join(d, name), "rb").read().decode("latin-1").split("\n")
+    return out
+
+
+def pick_and_place():
+    """An arm: 3 joints streaming `t` at 500 Hz along a smooth path."""
+    lines = ["w axis0.controller.config.input_filter_bandwidth 50"]
+    for k in range(250):
+        s = k / 250.0
+        for j, amp in ((1, 90.0), (2, -45.0), (3, 30.0)):
+            lines.append("t %d %.3f" % (j, amp * (0.5 - 0.5 * math.cos(math.pi * s))))
+        lines.append("!advance 0.002")
+    lines += ["f 1", "f 2", "f 3"]
+    return lines
+
+
+def synchronised_move():
+    return ["ms 1 120 2.5 10", "ms 2 -100 2.5 10", "ms 3 30 2.5 10", "mq 0 0",
+            "!advance 1", "r axis1.controller.trajectory_done", "!advance 1.6",
+            "r axis1.controller.trajectory_done", "f 1", "f 2", "f 3",
+            "ms 1 10 0 25", "ms 2 20 0 25", "mt 0 1", "!advance 0.5", "f 0"]
+
+
+def tuning_session():
+    lines = []
+    for gain in ("20", "25", "30.5", "12.25"):
+        lines += ["w axis1.controller.config.pos_gain " + gain,
+                  "r axis1.controller.config.pos_gain",
+                  "w axis1.controller.config.vel_gain 0.2",
+                  "w axis1.controller.config.vel_integrator_gain 0.5",
+                  "t 1 10", "!advance 0.3", "f 1", "t 1 0", "!advance 0.3", "f 1"]
+    lines += ["r axis1.motor.config.current_lim", "w axis1.output_shaft.vel_limit 300",
+              "r vbus_voltage 1", "r ibus 1", "ss 1", "e 1"]
+    return lines
+
+
+def with_checksums(lines):
+    out = []
+    for l in lines:
+        if l.startswith("!") or "*" in l:
+            out.append(l)
+            continue
+        x = 0
+        for ch in (l + " ").encode("latin-1"):
+            x ^= ch
+        out.append("%s *%d" % (l, x))
+    return out
+
+
+def write(harness, data):
+    d = os.path.join(ROOT, "tests", "corpus", harness)
+    os.makedirs(d, exist_ok=True)
+    name = hashlib.sha1(data).hexdigest()
+    with open(os.path.join(d, name), "wb") as f:
+        f.write(data)
+
+
+def protocol_only(lines):
+    return [l for l in lines if not l.startswith("!")]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--shared", default="/work/shared")
+    args = ap.parse_args()
+
+    sessions = {"spec": spec_examples(args.shared)}
+    sessions.update(recordings(args.shared))
+    sessions.update({"transcript-" + k: v for k, v in transcripts().items()})
+    sessions["pick-and-place"] = pick_and_place()
+    sessions["sync-move"] = synchronised_move()
+    sessions["tuning"] = tuning_session()
+    sessions["tuning-checksum"] = with_checksums(tuning_session())
+
+    for name, lines in sessions.items():
+        proto = protocol_only(lines)
+        body = "\n".join(proto).encode("latin-1") + b"\n"
+        # line: id 1 closed loop; id 2 with the forward hook; id 1 in e-stop
+        write("line", bytes([0, 0, 0, 0]) + body[:4000])
+        write("line", bytes([1, 4, 0, 0]) + body[:4000])
+        write("line", bytes([0, 2, 0x83, 5]) + body[:2000])
+        # stream: calm polling, and a rarely polled ring (overruns)
+        write("stream", b"\x01\x02\x03\x04\x00" + body[:4000])
+        write("stream", b"\x11\x22\x33\x44\x3e" + body[:4000])
+        write("stream", b"\x05\x06\x07\x08\xe1" + body[:2000])
+        # sim: the session on 3 drives, directives kept
+        simbody = "\n".join(l for l in lines if not l.startswith("!#")).encode("latin-1")
+        write("sim", bytes([2]) + simbody[:16000] + b"\n!advance 1\nf 0\n")
+
+    numbers = ["0", "-0", "1", "100.5", "0.02", "160", "-3", "0.00001", "1.5e-07", "3.0e+12",
+               "1.0e+09", "1.4142135623730951", "90.000000", "-45.500000", "1e39", "3.4028235e38",
+               "3.4028236e38", "1e-46", "1.17549435e-38", "7.0064923e-46", ".5", "5.", "+5",
+               "5e0", "50e-1", "99999999999999999999", "18446744073709551615",
+               "18446744073709551616", "0.1e-0000000000000000000001", "1" + "0" * 60,
+               "0." + "0" * 40 + "1", "4.9406564584124654e-324", "nan", "inf", "0x10", "1e",
+               "--1", "1.5", "-1", "1.000000000000000000000000000001"]
+    for t in numbers:
+        write("number", b"\x00" + t.encode())
+        write("number", b"\x01" + t.encode())
+    floats = [0.0, 1.0, 0.1, 100.5, 1e-5, 1.5e-7, 3e12, 1e9, 123456789.0, 1e8, 9.999999e8,
+              1.17549435e-38, 1.4e-45, 3.4028235e38, 16777216.0, 0.3]
+    write("number", b"\x02" + b"".join(struct.pack("<f", f) for f in floats))
+    write("number", b"\x02" + struct.pack("<I", 0x7fc00000) + struct.pack("<I", 0xff800000))
+    write("number", b"\x03" + struct.pack("<QQQ", 0, 18446744073709551615, 2026000001))
+
+
+if __name__ == "__main__":
+    main()

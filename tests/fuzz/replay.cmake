@@ -1,0 +1,31 @@
+# The fuzz harnesses built standalone (replay_main.c instead of libFuzzer) in
+# the normal test build, so CTest replays the corpus and every past finding
+# under gcc (or clang) with the sanitizers of the preset, plus the HAL
+# fault-injection test. Included from tests/CMakeLists.txt.
+set(_fz ${CMAKE_CURRENT_LIST_DIR})
+set(_corpus ${PROJECT_SOURCE_DIR}/tests/corpus)
+
+foreach(h stream line number sim)
+  if(h STREQUAL "sim" AND NOT TARGET daran_sim_model)
+    continue()
+  endif()
+  add_executable(fuzz_replay_${h} ${_fz}/fuzz_${h}.c ${_fz}/fuzz_hal.c ${_fz}/replay_main.c)
+  target_include_directories(fuzz_replay_${h} PRIVATE ${PROJECT_SOURCE_DIR}/src ${_fz})
+  target_compile_options(fuzz_replay_${h} PRIVATE -Wall -Wextra)
+  target_link_libraries(fuzz_replay_${h} PRIVATE daran_ascii m)
+  if(h STREQUAL "sim")
+    target_link_libraries(fuzz_replay_${h} PRIVATE daran_sim_model)
+  endif()
+  if(EXISTS ${_corpus}/${h})
+    add_test(NAME fuzz_corpus_${h} COMMAND fuzz_replay_${h} ${_corpus}/${h})
+  endif()
+  # One named test per past finding: regression_<harness>_<what it guards>.
+  file(GLOB _regressions ${_corpus}/regressions/${h}/*)
+  foreach(r IN LISTS _regressions)
+    get_filename_component(_name ${r} NAME_WE)
+    add_test(NAME regression_${h}_${_name} COMMAND fuzz_replay_${h} ${r})
+  endforeach()
+endforeach()
+
+daran_add_cmocka_test(test_hal_fault_injection ${_fz}/test_hal_fault_injection.c ${_fz}/fuzz_hal.c)
+target_include_directories(test_hal_fault_injection PRIVATE ${_fz})
