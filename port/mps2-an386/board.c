@@ -25,6 +25,7 @@
 
 /* System control space */
 #define NVIC_ISER0 REG32(0xE000E100u)
+#define NVIC_ICER0 REG32(0xE000E180u)
 #define NVIC_IPR_BASE 0xE000E400u
 #define SYST_CSR REG32(0xE000E010u)
 #define SYST_RVR REG32(0xE000E014u)
@@ -55,6 +56,16 @@ uint8_t board_uart0_take_rx(void)
         UART_STATE = UART_STATE_RX_OVERRUN; /* write 1 to clear */
     }
     return byte;
+}
+
+void board_uart0_rx_irq_enable(bool on)
+{
+    if (on) {
+        NVIC_ISER0 = 1u << UART0_RX_IRQ;
+    } else {
+        NVIC_ICER0 = 1u << UART0_RX_IRQ;
+        __asm volatile("dsb\n\tisb" ::: "memory");
+    }
 }
 
 void board_uart0_write(const char *bytes, size_t len)

@@ -3,6 +3,7 @@
 #ifndef DARAN_FW_BOARD_H
 #define DARAN_FW_BOARD_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -14,6 +15,9 @@
 void board_uart0_init(uint32_t baud);
 /* Read the received byte and acknowledge the RX interrupt; for the RX ISR. */
 uint8_t board_uart0_take_rx(void);
+/* Unmask / mask the RX interrupt in the NVIC. A byte left unread stays in
+ * the UART, and its interrupt stays pending until unmasked. */
+void board_uart0_rx_irq_enable(bool on);
 /* Send bytes, waiting for room in the one-byte transmit holding register. */
 void board_uart0_write(const char *bytes, size_t len);
 

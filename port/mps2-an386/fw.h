@@ -23,11 +23,16 @@ void daran_fw_uart0_rx_isr(void);
 void daran_fw_systick_isr(void);
 
 #if DARAN_FW_LOCKSTEP
+/* True while a directive waits for the main loop (the RX interrupt stays
+ * masked until it has run). */
+bool daran_fw_rx_held_by_directive(void);
 /* RX ISR side: true when @p byte belongs to a directive line (a line that
  * starts with '!'), which the core must never see. */
 bool daran_fw_lockstep_take(uint8_t byte);
 /* Main loop side: run a complete directive; true if one ran. */
 bool daran_fw_lockstep_run(void);
+#else
+#define daran_fw_rx_held_by_directive() false
 #endif
 
 #endif /* DARAN_FW_H */

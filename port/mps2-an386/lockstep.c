@@ -24,10 +24,6 @@
 #include "board.h"
 #include "fw.h"
 
-#define NVIC_ISER0 (*(volatile uint32_t *)0xE000E100u)
-#define NVIC_ICER0 (*(volatile uint32_t *)0xE000E180u)
-#define UART0_RX_IRQ_BIT (1u << 0)
-
 #define DIRECTIVE_MAX 40u
 
 static bool at_line_start = true;
@@ -49,7 +45,7 @@ bool daran_fw_lockstep_take(uint8_t byte)
     if (byte == (uint8_t)'\n') {
         in_directive = false;
         directive_ready = true;
-        NVIC_ICER0 = UART0_RX_IRQ_BIT;
+        board_uart0_rx_irq_enable(false);
     } else if (directive_len < DIRECTIVE_MAX) {
         directive[directive_len++] = (char)byte;
     }
@@ -147,6 +143,11 @@ static void run_directive(const char *p, const char *end)
     }
 }
 
+bool daran_fw_rx_held_by_directive(void)
+{
+    return directive_ready;
+}
+
 bool daran_fw_lockstep_run(void)
 {
     if (!directive_ready) {
@@ -156,6 +157,6 @@ bool daran_fw_lockstep_run(void)
     (void)daran_poll(&daran_fw_drive);
     run_directive(directive, directive + directive_len);
     directive_ready = false;
-    NVIC_ISER0 = UART0_RX_IRQ_BIT;
+    board_uart0_rx_irq_enable(true);
     return true;
 }

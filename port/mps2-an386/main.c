@@ -37,6 +37,19 @@ static uint32_t ticks_run;
  * main loop may only sleep when nothing arrived since. */
 static volatile bool rx_seen;
 
+/* Receive flow control. On a real link at 115200 baud a byte comes every
+ * 87 us and the main loop drains the ring long before it fills; QEMU's UART
+ * has no baud timing and hands over the next byte as soon as DATA is read,
+ * so a pasted or scripted burst would overrun the ring. When the ring may
+ * be full the ISR leaves the byte in the UART and masks its interrupt (on a
+ * board with RTS/CTS this is where RTS drops); the main loop unmasks it
+ * after the next poll has drained the ring. Bytes queued minus bytes
+ * drained bounds what the ring holds: rx_queued is written by the ISR
+ * only, rx_drained by the main loop only. */
+static volatile uint32_t rx_queued;
+static volatile uint32_t rx_drained;
+static volatile bool rx_paused;
+
 static void reply_to_uart(void *ctx, const char *line, size_t len)
 {
     (void)ctx;
@@ -54,16 +67,39 @@ void daran_fw_start_drive(void)
 
 void daran_fw_uart0_rx_isr(void)
 {
-    uint8_t byte = board_uart0_take_rx();
+    uint8_t byte;
     rx_seen = true;
+    if (rx_queued - rx_drained >= DARAN_RX_RING_SIZE - 1u) {
+        board_uart0_rx_irq_enable(false);
+        rx_paused = true;
+        return;
+    }
+    byte = board_uart0_take_rx();
 #if DARAN_FW_LOCKSTEP
     if (daran_fw_lockstep_take(byte)) {
         return;
     }
 #endif
-    /* A full ring loses the byte; the core answers that line
-     * `line too long` (D3), which is all a drive can do. */
+    /* Cannot fail with the flow control above; without it a full ring
+     * loses the byte and the core answers that line `line too long` (D3). */
     (void)daran_rx_byte(&daran_fw_drive, byte);
+    rx_queued = rx_queued + 1u;
+}
+
+/* The core's poll, plus the flow-control bookkeeping around it. */
+static bool poll_drive(void)
+{
+    uint32_t queued_before = rx_queued;
+    size_t lines;
+    rx_seen = false;
+    lines = daran_poll(&daran_fw_drive);
+    /* daran_poll() drains every byte that was queued when it started. */
+    rx_drained = queued_before;
+    if (rx_paused && !daran_fw_rx_held_by_directive()) {
+        rx_paused = false;
+        board_uart0_rx_irq_enable(true);
+    }
+    return lines > 0u;
 }
 
 void daran_fw_systick_isr(void)
@@ -92,8 +128,7 @@ int main(void)
 #endif
     for (;;) {
         bool busy = run_due_ticks();
-        rx_seen = false;
-        busy = daran_poll(&daran_fw_drive) > 0u || busy;
+        busy = poll_drive() || busy;
 #if DARAN_FW_LOCKSTEP
         busy = daran_fw_lockstep_run() || busy;
 #endif
