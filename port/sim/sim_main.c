@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <getopt.h>
+#include <inttypes.h>
 #include <math.h>
 #include <poll.h>
 #include <signal.h>
@@ -49,6 +50,12 @@ static const char usage_text[] =
     "                     can open that path as the drives' port. stdin still takes\n"
     "                     directives and protocol lines (replies on stdout); ends\n"
     "                     on SIGINT or SIGTERM\n"
+    "  --record FILE      write every protocol line the drives receive (not the\n"
+    "                     directives) to FILE as `SECONDS<TAB>line bytes` (the\n"
+    "                     bytes before the newline, trailing spaces kept), after\n"
+    "                     `#` header lines; SECONDS is the simulated time (moved\n"
+    "                     by !advance), with --pty the real time since start.\n"
+    "                     tools/replay plays such a file back\n"
     "  --echo             also print each request as \"> line\", each reply line as\n"
     "                     \"< line\" and each directive (for demos; stdout is then\n"
     "                     no longer the drives' bytes)\n"
@@ -76,6 +83,11 @@ typedef struct sim_app {
     daran_sim_bus_t bus;
     daran_sim_file_storage_t files[DARAN_SIM_MAX_DRIVES];
     FILE *trace;
+    FILE *record;
+    double record_start_s;
+    char *record_partial; /* --pty: bytes of a line not yet ended */
+    size_t record_partial_len;
+    size_t record_partial_cap;
     uint32_t trace_every;
     bool echo;
     bool pty;
@@ -153,6 +165,94 @@ static void run_ticks(uint64_t n)
     for (k = 0; k < n; k++) {
         daran_sim_bus_tick(&app.bus);
         trace_row();
+    }
+}
+
+/* ---- --record ---- */
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/* The header says how the session ran, so tools/replay can run it the same
+ * way without being told. */
+static void record_header(void)
+{
+    fputs("# Protocol lines received by daran-sim (--record): seconds since start, a tab,\n"
+          "# then the exact bytes of the line before its \\n. Directives are not recorded.\n",
+          app.record);
+    fprintf(app.record, "# daran-sim --drives %u --tick-hz %u%s\n", app.bus.count,
+            app.bus.tick_hz, app.pty ? " --pty (real time)" : "");
+}
+
+/* Simulated time in as many decimals as make it exact (4 at 1 kHz, 6 at
+ * 8 kHz, at most 9), from the tick count in integers: replaying it gives back
+ * the same tick for every line. */
+static void record_sim_time(void)
+{
+    uint64_t hz = app.bus.tick_hz;
+    uint64_t scale = 10000u;
+    int digits = 4;
+    uint64_t whole;
+    uint64_t frac;
+    while (digits < 9 && scale % hz != 0u) {
+        scale *= 10u;
+        digits++;
+    }
+    whole = app.bus.ticks / hz;
+    frac = ((app.bus.ticks % hz) * scale + hz / 2u) / hz;
+    if (frac >= scale) {
+        whole++;
+        frac -= scale;
+    }
+    fprintf(app.record, "%" PRIu64 ".%0*" PRIu64, whole, digits, frac);
+}
+
+/* One received line, without its '\n'. */
+static void record_line(const char *bytes, size_t len)
+{
+    if (app.record == NULL) {
+        return;
+    }
+    if (app.pty) {
+        fprintf(app.record, "%.6f", now_s() - app.record_start_s);
+    } else {
+        record_sim_time();
+    }
+    fputc('\t', app.record);
+    fwrite(bytes, 1, len, app.record);
+    fputc('\n', app.record);
+    fflush(app.record); /* a killed session keeps what it received */
+}
+
+/* Bytes from the pty arrive in any chunks: a line is recorded when its '\n'
+ * arrives (a line never ended by the end of the run is not recorded). */
+static void record_bytes(const char *bytes, size_t len)
+{
+    while (app.record != NULL && len > 0u) {
+        const char *nl = memchr(bytes, '\n', len);
+        size_t n = nl != NULL ? (size_t)(nl - bytes) : len;
+        if (app.record_partial_len + n > app.record_partial_cap) {
+            size_t cap = app.record_partial_len + n + 256u;
+            char *grown = realloc(app.record_partial, cap);
+            if (grown == NULL) {
+                return;
+            }
+            app.record_partial = grown;
+            app.record_partial_cap = cap;
+        }
+        memcpy(app.record_partial + app.record_partial_len, bytes, n);
+        app.record_partial_len += n;
+        if (nl == NULL) {
+            return;
+        }
+        record_line(app.record_partial, app.record_partial_len);
+        app.record_partial_len = 0u;
+        bytes += n + 1u;
+        len -= n + 1u;
     }
 }
 
@@ -363,6 +463,7 @@ static void handle_input_line(char *line, size_t len)
             fputs("> ", stdout);
             fwrite(line, 1, len, stdout);
         }
+        record_line(line, len > 0u && line[len - 1u] == '\n' ? len - 1u : len);
         daran_sim_bus_send(&app.bus, line, len);
         collect(sink_stdout, line, len > 0u && line[len - 1u] == '\n' ? len - 1u : len);
     }
@@ -394,13 +495,6 @@ static void run_lockstep(void)
 }
 
 /* ---- real-time pty mode ---- */
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
 
 static int open_pty(char *path, size_t path_size, int *slave_keep)
 {
@@ -460,6 +554,7 @@ static int run_pty(void)
             char buf[512];
             ssize_t n = read(app.pty_fd, buf, sizeof buf);
             if (n > 0) {
+                record_bytes(buf, (size_t)n);
                 daran_sim_bus_send(&app.bus, buf, (size_t)n);
                 collect(sink_pty, NULL, 0u);
             }
@@ -594,6 +689,7 @@ int main(int argc, char **argv)
         {"trace-every", required_argument, NULL, 'e'},
         {"pty", no_argument, NULL, 'p'},
         {"echo", no_argument, NULL, 'E'},
+        {"record", required_argument, NULL, 'R'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
     };
@@ -602,6 +698,7 @@ int main(int argc, char **argv)
     unsigned long every = 1ul;
     const char *nvm_dir = NULL;
     const char *trace_path = NULL;
+    const char *record_path = NULL;
     int c;
     int rc;
     uint32_t i;
@@ -635,6 +732,9 @@ int main(int argc, char **argv)
             break;
         case 'E':
             app.echo = true;
+            break;
+        case 'R':
+            record_path = optarg;
             break;
         case 'h':
             fputs(usage_text, stdout);
@@ -682,6 +782,16 @@ int main(int argc, char **argv)
         trace_header();
         trace_row();
     }
+    if (record_path != NULL) {
+        app.record = fopen(record_path, "w");
+        if (app.record == NULL) {
+            fprintf(stderr, "daran-sim: --record: cannot write %s: %s\n", record_path,
+                    strerror(errno));
+            return 2;
+        }
+        record_header();
+        app.record_start_s = now_s();
+    }
 
     if (app.pty) {
         rc = run_pty();
@@ -696,6 +806,14 @@ int main(int argc, char **argv)
         fprintf(stderr, "daran-sim: --trace: write failed\n");
         app.status = 1;
     }
+    if (app.record != NULL) {
+        bool failed = ferror(app.record) != 0;
+        if (fclose(app.record) != 0 || failed) {
+            fprintf(stderr, "daran-sim: --record: write failed\n");
+            app.status = 1;
+        }
+    }
+    free(app.record_partial);
     if (nvm_dir != NULL) {
         save_shafts(nvm_dir);
     }
