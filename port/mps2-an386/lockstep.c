@@ -7,6 +7,8 @@
  * protocol lines unchanged and turns each daran-sim directive into one of
  * these lines, which never reach the core:
  *
+ *   !h HZ           control tick rate HZ (daran-sim --tick-hz): the drive
+ *                   starts again at that rate; sent before the first line
  *   !t N            run N control ticks (the driver rounds SECONDS x rate
  *                   as daran-sim does)
  *   !p ID           power-cycle when ID is 0 or the drive's id
@@ -100,6 +102,14 @@ static void run_directive(const char *p, const char *end)
         uint32_t n = parse_uint(&p, end, 10u);
         while (n-- > 0u) {
             daran_sim_model_tick(&daran_fw_plant.model);
+        }
+        break;
+    }
+    case 'h': {
+        uint32_t hz = parse_uint(&p, end, 10u);
+        if (hz > 0u) {
+            daran_sim_drive_init(&daran_fw_plant, 0u, hz);
+            daran_fw_start_drive();
         }
         break;
     }

@@ -10,6 +10,7 @@ Protocol lines go to the UART unchanged. daran-sim directives become the
 firmware's lock-step directives (port/mps2-an386/lockstep.c), which the
 firmware takes off the line before the core sees it:
 
+  --tick-hz HZ      -> !h HZ  (first line)
   !advance S        -> !t N   (N = S x tick rate, rounded half away from
                                zero like daran-sim's llround)
   !power-cycle [ID] -> !p ID
@@ -109,24 +110,41 @@ def main():
     expected_path = opt.expected or os.path.splitext(opt.transcript)[0] + ".expected"
     with open(opt.transcript, "rb") as f:
         data = f.read()
+    tick_hz_line = b""
     options_path = os.path.splitext(opt.transcript)[0] + ".args"
     if os.path.exists(options_path):
         with open(options_path) as f:
             sim_args = shlex.split(f.read())
         # --nvm DIR: a fresh store that lives across !power-cycle, which is
-        # what the firmware's RAM store is within one run. Anything else
-        # (--drives N: a bus of drives, --tick-hz, --echo) the firmware,
-        # one drive on one UART, does not model.
-        other = [a for a in sim_args if a != "--nvm" and not a.startswith("@")
-                 and not a.startswith("--nvm=")]
+        # what the firmware's RAM store is within one run. --tick-hz HZ: the
+        # firmware restarts its drive at that rate. Anything else (--drives
+        # N: a bus of drives, --echo) the firmware, one drive on one UART,
+        # does not model.
+        other = []
+        i = 0
+        while i < len(sim_args):
+            a = sim_args[i]
+            if a == "--nvm" or a == "--tick-hz":
+                if i + 1 < len(sim_args) and a == "--tick-hz":
+                    opt.tick_hz = int(sim_args[i + 1])
+                    tick_hz_line = b"!h %d\n" % opt.tick_hz
+                i += 2
+                continue
+            if a.startswith("--tick-hz="):
+                opt.tick_hz = int(a.split("=", 1)[1])
+                tick_hz_line = b"!h %d\n" % opt.tick_hz
+            elif not a.startswith("--nvm="):
+                other.append(a)
+            i += 1
         if other:
-            print(f"SKIP {opt.transcript}: daran-sim options {sim_args} are not modelled "
+            print(f"SKIP {opt.transcript}: daran-sim options {other} are not modelled "
                   "by the firmware (one drive on one UART)")
             return SKIP
     feed = translate(data, opt.tick_hz)
     if feed is None:
         print(f"SKIP {opt.transcript}: a directive the firmware does not model")
         return SKIP
+    feed = tick_hz_line + feed
     with open(expected_path, "rb") as f:
         expected = f.read()
 
