@@ -303,6 +303,25 @@ static void test_command_words_are_case_insensitive(void **state)
     ASSERT_ACTION(m, "ST 1", DARAN_ACTION_ESTOP);
 }
 
+static void test_every_command_word_works_in_upper_case(void **state)
+{
+    (void)state;
+    static const char *const lines[] = {
+        "T 1 10", "Q 1 10", "P 1 10", "V 1 10", "C 1 1", "D 1 0 0 0 0 0", "MS 1 10 0 5",
+        "MT 1 0", "MS 1 10 2 10", "MQ 1 1", "MS 1 10 0 0", "MP 1 0", "MS 1 1 0 1", "MV 1",
+        "MS 1 1 0 1", "MC 1", "R axis1.error", "W axis1.output_shaft.input_pos 1", "SS 1",
+        "SE 1", "SZ 1", "U 1", "H 1", "F 1", "G 1", "I 1", "E 1", "ST 1", "SC 1", "SR 1",
+    };
+    mock_t *m = mock_new();
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        mock_send_line(m, lines[i]);
+        mock_check(strstr(m->out, "error") == NULL, m, __FILE__, __LINE__,
+                   "an upper-case command word must work");
+        mock_check(m->n_calls > 0 || m->n_writes > 0 || lines[i][1] == 'S', m, __FILE__, __LINE__,
+                   "the command must have run");
+    }
+}
+
 static void test_property_paths_are_case_sensitive(void **state)
 {
     (void)state;
@@ -362,6 +381,7 @@ int main(void)
     ADD(test_too_many_fields_is_invalid_command_format);
     ADD(test_too_few_fields_is_invalid_command_format);
     ADD(test_command_words_are_case_insensitive);
+    ADD(test_every_command_word_works_in_upper_case);
     ADD(test_property_paths_are_case_sensitive);
     for (size_t i = 0; i < sizeof unknown_words / sizeof unknown_words[0]; i++)
         mock_suite_add(&s, unknown_word_case, (void *)(uintptr_t)unknown_words[i],

@@ -284,6 +284,11 @@ static void test_mq_with_zero_distance_is_accepted(void **state)
     const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 1");
     assert_int_equal(mv->kind, Q);
     assert_true(mv->pos_deg == 5.0f);
+    /* daran_hal.h: a given cruise and accel are > 0, even for a move that is already done */
+    if (mv->given & GV)
+        assert_true(mv->vel_rpm > 0.0f);
+    if (mv->given & GR)
+        assert_true(mv->rate > 0.0f);
     ASSERT_SILENT(m, "ms 1 5 2 10");
     mv = ASSERT_MOVE(m, "mq 1 0");
     assert_true(mv->pos_deg == 5.0f);

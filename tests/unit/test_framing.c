@@ -434,6 +434,11 @@ static void test_process_line_runs_a_framed_line(void **state)
     assert_int_equal(daran_process_line(&m->drive, "", 0), DARAN_OK);
     assert_int_equal(daran_process_line(&m->drive, "f 2", 3), DARAN_OK);
     ASSERT_REPLY(m, "");
+    /* the same 128-byte limit as the byte path */
+    char buf[DARAN_LINE_MAX + 1];
+    make_padded(buf, "f 1", DARAN_LINE_MAX, "");
+    assert_int_equal(daran_process_line(&m->drive, buf, DARAN_LINE_MAX), DARAN_OK);
+    ASSERT_REPLY(m, "0 0\n");
 }
 
 static void test_process_line_returns_the_error_it_answered(void **state)
