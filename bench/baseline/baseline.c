@@ -632,6 +632,10 @@ static daran_result_t cmd_mc(baseline_t *b, const bl_command_t *cmd, char tok[][
 
 /* ---- properties ---------------------------------------------------------- */
 
+/* Kept out of line so the benchmark can count it on its own. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
 daran_prop_t baseline_find_property(int scope, const char *name)
 {
     for (size_t i = 0; i < PROPERTY_COUNT; i++) {

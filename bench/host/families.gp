@@ -1,7 +1,7 @@
 # Chart of core instructions per line by command family, daran-ascii against
 # the baseline yardstick. Called by run_all.sh:
 #   gnuplot -e "datafile='families.dat'; outfile='chart.png'" families.gp
-set terminal pngcairo size 1000,520 font "sans,10"
+set terminal pngcairo size 1000,520 font "sans,10" noenhanced
 set output outfile
 set title "Host (x86-64, gcc -O2): instructions per line, callgrind"
 set style data histograms

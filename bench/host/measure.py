@@ -55,6 +55,24 @@ def callgrind(driver, args, toggles=()):
         os.unlink(out)
 
 
+def per_call(driver, mode, stream, function):
+    """Instructions inside each call of function, in call order (callgrind
+    dumps a profile after every call; each holds the cost since the last)."""
+    with tempfile.TemporaryDirectory(prefix="cg.") as tmp:
+        base = os.path.join(tmp, "cg.out")
+        subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + base,
+                        "--toggle-collect=" + function, "--dump-after=" + function,
+                        driver, mode, stream],
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        dumps = sorted((int(n.rsplit(".", 1)[1]), n) for n in os.listdir(tmp)
+                       if re.match(r"cg\.out\.\d+$", n))
+        costs = []
+        for _, name in dumps:
+            with open(os.path.join(tmp, name)) as f:
+                costs.append(next(int(l.split()[1]) for l in f if l.startswith("totals:")))
+        return costs
+
+
 def core(driver, mode, args, toggles=None):
     return callgrind(driver, [mode] + args, toggles or ENTRY[mode])
 
@@ -125,10 +143,25 @@ def sessions_table(driver, md):
     return figures
 
 
-def lookup_table(driver, md):
+def lookup_table(driver, out, md):
     props = properties()
     axis = [p for p, s in props if s == "AXIS"]
     system = [p for p, s in props if s == "SYSTEM"]
+    # Every property once, in list order (= table order of both parsers).
+    sweep = os.path.join(out, "lookup_lines.txt")
+    with open(sweep, "w") as f:
+        for path, scope in props:
+            f.write("r axis1.%s\n" % path if scope == "AXIS" else "r %s 1\n" % path)
+    ours_all = per_call(driver, "ours", sweep, LOOKUP["ours"][0])
+    base_all = per_call(driver, "baseline", sweep, LOOKUP["baseline"][0])
+    if len(ours_all) != len(props) or len(base_all) != len(props):
+        raise RuntimeError("lookup sweep: %d/%d calls for %d properties"
+                           % (len(ours_all), len(base_all), len(props)))
+    with open(os.path.join(out, "lookup.dat"), "w") as f:
+        f.write("# row  daran-ascii  baseline  path   (instructions per lookup)\n")
+        for i, ((path, scope), a, b) in enumerate(zip(props, ours_all, base_all)):
+            f.write("%d %d %d %s%s\n" % (i + 1, a, b, "axisN." if scope == "AXIS" else "", path))
+    index = {p: i for i, (p, _) in enumerate(props)}
     picks = [("system, first", system[0], "r %s 1" % system[0]),
              ("system, last", system[-1], "r %s 1" % system[-1]),
              ("axis, first", axis[0], "r axis1." + axis[0]),
@@ -141,18 +174,26 @@ def lookup_table(driver, md):
               "daran_find_property / baseline_find_property while the `r` line is processed; "
               "line = the whole `r` request (core)." % (len(props), len(system), len(axis)))
     md.append("")
-    md.append("| property | path | lookup: daran-ascii | lookup: baseline | `r` line: daran-ascii | "
-              "`r` line: baseline |")
-    md.append("|---|---|---:|---:|---:|---:|")
+    md.append("| property | row | path | lookup: daran-ascii | lookup: baseline | "
+              "`r` line: daran-ascii | `r` line: baseline |")
+    md.append("|---|---:|---|---:|---:|---:|---:|")
     for label, name, line in picks:
         args = ["--repeat", str(repeat), "--line", line]
         ours = core(driver, "ours", args, LOOKUP["ours"]) / repeat
         base = core(driver, "baseline", args, LOOKUP["baseline"]) / repeat
-        ours_line = core(driver, "ours", ["--repeat", str(repeat), "--line", line]) / repeat
-        base_line = core(driver, "baseline", ["--repeat", str(repeat), "--line", line]) / repeat
-        md.append("| %s | `%s` | %s | %s | %s | %s |" % (
-            label, name, fmt(ours), fmt(base), fmt(ours_line), fmt(base_line)))
+        ours_line = core(driver, "ours", args) / repeat
+        base_line = core(driver, "baseline", args) / repeat
+        row = str(index[name] + 1) if name in index else "-"
+        md.append("| %s | %s | `%s` | %s | %s | %s | %s |" % (
+            label, row, name, fmt(ours), fmt(base), fmt(ours_line), fmt(base_line)))
         print("  lookup %-14s ours %5.0f baseline %5.0f" % (label, ours, base), flush=True)
+    md.append("")
+    md.append("Over all %d rows: daran-ascii min %s, mean %s, max %s instructions per lookup; "
+              "baseline min %s, mean %s, max %s (every row: lookup.dat, chart "
+              "docs/bench-host-lookup.png)." % (
+                  len(props), fmt(min(ours_all)), fmt(sum(ours_all) / len(ours_all)),
+                  fmt(max(ours_all)), fmt(min(base_all)), fmt(sum(base_all) / len(base_all)),
+                  fmt(max(base_all))))
 
 
 def length_table(driver, md):
@@ -215,7 +256,7 @@ def main():
     md.append("")
     md.append("### Scaling: property lookup")
     md.append("")
-    lookup_table(args.driver, md)
+    lookup_table(args.driver, args.out, md)
     md.append("")
     md.append("### Scaling: line length (core instructions per line)")
     md.append("")

@@ -9,7 +9,8 @@
 # build/bench/, checks that daran-ascii and the baseline make the same HAL
 # calls on every stream, counts instructions with callgrind, draws the chart
 # and links the Cortex-M4 images. Results: build/bench/results/{host,m4}.md,
-# chart: docs/bench-host-instructions.png. About 3 minutes on one core.
+# charts: docs/bench-host-instructions.png, docs/bench-host-lookup.png. About
+# 3 minutes on one core.
 set -eu
 cd "$(dirname "$0")/../.."
 build=build/bench
@@ -43,11 +44,13 @@ fi
 # shellcheck disable=SC2086
 nice -n 10 python3 bench/host/measure.py --driver "$driver" $clang_args --out "$results" $reference_args
 
-echo "== chart"
+echo "== charts"
 gnuplot -e "datafile='$results/families.dat'; outfile='docs/bench-host-instructions.png'" \
   bench/host/families.gp
+gnuplot -e "datafile='$results/lookup.dat'; outfile='docs/bench-host-lookup.png'" \
+  bench/host/lookup.gp
 
 echo "== Cortex-M4 flash and RAM"
 sh bench/host/m4_size.sh "$build/m4" | tee "$results/m4.md"
 
-echo "== done: $results/host.md, $results/m4.md, docs/bench-host-instructions.png"
+echo "== done: $results/host.md, $results/m4.md, docs/bench-host-*.png"

@@ -1,0 +1,13 @@
+# Chart of the property lookup cost for every row of the property table,
+# daran-ascii against the baseline's linear strcmp. Called by run_all.sh:
+#   gnuplot -e "datafile='lookup.dat'; outfile='chart.png'" lookup.gp
+set terminal pngcairo size 1000,420 font "sans,10" noenhanced
+set output outfile
+set title "Host (x86-64, gcc -O2): instructions per property lookup, by table row"
+set xlabel "row of the property table (include/daran_properties.h order)"
+set ylabel "instructions per lookup"
+set grid
+set key top left
+set yrange [0:*]
+plot datafile using 1:2 with linespoints pt 7 ps 0.6 lc rgb "#2a7ab0" title "daran-ascii", \
+     '' using 1:3 with linespoints pt 5 ps 0.6 lc rgb "#c8553d" title "baseline (linear strcmp)"
