@@ -251,6 +251,28 @@ static void test_failed_state_getter_refuses_motion(void **state)
     ASSERT_MOVE(m, "t 1 10");
 }
 
+static void test_failed_node_id_getter_is_answered_as_that_error(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_CAN_NODE_ID);
+    ASSERT_ERROR(m, "t 1 10", "motor fault");
+    ASSERT_MOVE(m, "t 1 10");
+}
+
+static void test_relative_target_beyond_float_range_is_refused(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 3e38f;
+    ASSERT_SILENT(m, "ms 1 3e38 0 5");
+    ASSERT_ERROR(m, "mt 1 1", "value out of range");
+    ASSERT_SILENT(m, "ms 1 3e38 0 0");
+    ASSERT_ERROR(m, "mp 1 1", "value out of range");
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
+    ASSERT_MOVE(m, "mp 1 1");
+}
+
 static void test_failed_setpoint_getter_refuses_a_relative_start(void **state)
 {
     (void)state;
@@ -299,6 +321,8 @@ int main(void)
                        (int)injected[i], expected_phrase(injected[i]));
     ADD(test_failed_getter_of_a_query_answers_that_error);
     ADD(test_failed_state_getter_refuses_motion);
+    ADD(test_failed_node_id_getter_is_answered_as_that_error);
+    ADD(test_relative_target_beyond_float_range_is_refused);
     ADD(test_failed_setpoint_getter_refuses_a_relative_start);
     ADD(test_refused_start_after_hal_failure_keeps_the_preset);
     return mock_suite_run(&s, "errors");

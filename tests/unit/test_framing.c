@@ -434,6 +434,12 @@ static void test_process_line_runs_a_framed_line(void **state)
     assert_int_equal(daran_process_line(&m->drive, "", 0), DARAN_OK);
     assert_int_equal(daran_process_line(&m->drive, "f 2", 3), DARAN_OK);
     ASSERT_REPLY(m, "");
+    /* a checksum field works the same on this path */
+    char want[32];
+    assert_int_equal(daran_process_line(&m->drive, "f 1 *87", 7), DARAN_OK);
+    ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "0 0", true));
+    assert_int_equal(daran_process_line(&m->drive, "f 1 *86", 7), DARAN_ERR_CHECKSUM_MISMATCH);
+    ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "error: checksum mismatch", true));
     /* the same 128-byte limit as the byte path */
     char buf[DARAN_LINE_MAX + 1];
     make_padded(buf, "f 1", DARAN_LINE_MAX, "");
