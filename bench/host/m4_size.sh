@@ -47,9 +47,11 @@ compile main-baseline 2 bench/host/m4_main.c
 compile core 1 $core_sources
 compile baseline 2 bench/baseline/baseline.c
 # The same core without the `h` help strings (DARAN_ENABLE_HELP=0).
+all_cflags=$cflags
 cflags="$cflags -DDARAN_ENABLE_HELP=0"
 # shellcheck disable=SC2086
 compile core-nohelp 1 $core_sources
+cflags=$all_cflags
 
 link empty "" main-empty
 link daran "" main-daran core
@@ -57,4 +59,10 @@ link daran-nohelp "" main-daran core-nohelp
 # A firmware that scans and prints floats with newlib-nano must ask for it.
 link baseline "-u _printf_float -u _scanf_float" main-baseline baseline
 
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+dirty=""
+[ -n "$(git status --porcelain -- src include 2>/dev/null)" ] && dirty=" with uncommitted changes in src/ or include/"
+echo "Measured on commit $commit$dirty, $($cc --version | head -1), newlib-nano; flags:"
+echo "\`$cflags\`, link \`$ldflags\` (+ \`-u _printf_float -u _scanf_float\` for the baseline)."
+echo
 python3 bench/host/m4_map_summary.py "$out"

@@ -8,7 +8,8 @@
 # Builds the benchmark driver (gcc and clang-14, -O2, no sanitizers) in
 # build/bench/, checks that daran-ascii and the baseline make the same HAL
 # calls on every stream, counts instructions with callgrind, draws the chart
-# and links the Cortex-M4 images. Results: build/bench/results/{host,m4}.md,
+# links the Cortex-M4 images and rewrites the generated tables of
+# docs/performance.md. Results: build/bench/results/{host,m4}.md,
 # charts: docs/bench-host-instructions.png, docs/bench-host-lookup.png. About
 # 3 minutes on one core.
 set -eu
@@ -52,5 +53,8 @@ gnuplot -e "datafile='$results/lookup.dat'; outfile='docs/bench-host-lookup.png'
 
 echo "== Cortex-M4 flash and RAM"
 sh bench/host/m4_size.sh "$build/m4" | tee "$results/m4.md"
+
+echo "== docs/performance.md (generated blocks only)"
+python3 bench/host/update_docs.py docs/performance.md host="$results/host.md" m4="$results/m4.md"
 
 echo "== done: $results/host.md, $results/m4.md, docs/bench-host-*.png"
