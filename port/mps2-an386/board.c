@@ -32,7 +32,7 @@
 #define SYST_CVR REG32(0xE000E018u)
 #define SCB_SHPR3 REG32(0xE000ED20u)
 
-void board_uart0_init(uint32_t baud)
+void daran_board_uart0_init(uint32_t baud)
 {
     UART_CTRL = 0u;
     /* The CMSDK UART refuses divisors below 16. */
@@ -45,7 +45,7 @@ void board_uart0_init(uint32_t baud)
     NVIC_ISER0 = 1u << UART0_RX_IRQ;
 }
 
-uint8_t board_uart0_take_rx(void)
+uint8_t daran_board_uart0_take_rx(void)
 {
     uint8_t byte;
     /* Acknowledge before reading: reading DATA lets the next byte in at
@@ -58,7 +58,7 @@ uint8_t board_uart0_take_rx(void)
     return byte;
 }
 
-void board_uart0_rx_irq_enable(bool on)
+void daran_board_uart0_rx_irq_enable(bool on)
 {
     if (on) {
         NVIC_ISER0 = 1u << UART0_RX_IRQ;
@@ -68,7 +68,7 @@ void board_uart0_rx_irq_enable(bool on)
     }
 }
 
-void board_uart0_write(const char *bytes, size_t len)
+void daran_board_uart0_write(const char *bytes, size_t len)
 {
     size_t i;
     for (i = 0; i < len; i++) {
@@ -78,7 +78,7 @@ void board_uart0_write(const char *bytes, size_t len)
     }
 }
 
-void board_systick_start(uint32_t hz)
+void daran_board_systick_start(uint32_t hz)
 {
     SYST_CSR = 0u;
     SYST_RVR = BOARD_SYSCLK_HZ / hz - 1u;
@@ -88,19 +88,19 @@ void board_systick_start(uint32_t hz)
     SYST_CSR = 7u; /* core clock, interrupt, enable */
 }
 
-void board_wait_for_interrupt(void)
+void daran_board_wait_for_interrupt(void)
 {
     __asm volatile("wfi" ::: "memory");
 }
 
-uint32_t board_irq_save(void)
+uint32_t daran_board_irq_save(void)
 {
     uint32_t primask;
     __asm volatile("mrs %0, primask\n\tcpsid i" : "=r"(primask)::"memory");
     return primask;
 }
 
-void board_irq_restore(uint32_t primask)
+void daran_board_irq_restore(uint32_t primask)
 {
     __asm volatile("msr primask, %0" ::"r"(primask) : "memory");
 }
@@ -119,7 +119,7 @@ static uint32_t semihost(uint32_t op, const void *arg)
 #define SYS_EXIT_EXTENDED 0x20u
 #define ADP_STOPPED_APPLICATION_EXIT 0x20026u
 
-void board_exit(int code)
+void daran_board_exit(int code)
 {
     uint32_t block[2];
     block[0] = ADP_STOPPED_APPLICATION_EXIT;
@@ -129,17 +129,17 @@ void board_exit(int code)
     }
 }
 #else
-void board_exit(int code)
+void daran_board_exit(int code)
 {
     (void)code;
-    (void)board_irq_save();
+    (void)daran_board_irq_save();
     for (;;) {
         __asm volatile("wfi");
     }
 }
 #endif
 
-void board_fatal(int code)
+void daran_board_fatal(int code)
 {
-    board_exit(code);
+    daran_board_exit(code);
 }

@@ -12,30 +12,30 @@
 
 /* UART0, 8N1 at @p baud, receiver interrupt on (NVIC IRQ 0), transmitter
  * polled. */
-void board_uart0_init(uint32_t baud);
+void daran_board_uart0_init(uint32_t baud);
 /* Read the received byte and acknowledge the RX interrupt; for the RX ISR. */
-uint8_t board_uart0_take_rx(void);
+uint8_t daran_board_uart0_take_rx(void);
 /* Unmask / mask the RX interrupt in the NVIC. A byte left unread stays in
  * the UART, and its interrupt stays pending until unmasked. */
-void board_uart0_rx_irq_enable(bool on);
+void daran_board_uart0_rx_irq_enable(bool on);
 /* Send bytes, waiting for room in the one-byte transmit holding register. */
-void board_uart0_write(const char *bytes, size_t len);
+void daran_board_uart0_write(const char *bytes, size_t len);
 
 /* SysTick interrupt at @p hz from the core clock. */
-void board_systick_start(uint32_t hz);
+void daran_board_systick_start(uint32_t hz);
 
 /* Wait for an interrupt (the main loop's idle). */
-void board_wait_for_interrupt(void);
+void daran_board_wait_for_interrupt(void);
 
 /* Mask / unmask interrupts around the few lines the main loop shares with
  * an ISR. */
-uint32_t board_irq_save(void);
-void board_irq_restore(uint32_t primask);
+uint32_t daran_board_irq_save(void);
+void daran_board_irq_restore(uint32_t primask);
 
 /* End the program: under QEMU with semihosting (test builds) the emulator
  * exits with @p code; otherwise the CPU stops here. */
-void board_exit(int code) __attribute__((noreturn));
-/* A fault: board_exit(code) in test builds, a halt otherwise. */
-void board_fatal(int code) __attribute__((noreturn));
+void daran_board_exit(int code) __attribute__((noreturn));
+/* A fault: daran_board_exit(code) in test builds, a halt otherwise. */
+void daran_board_fatal(int code) __attribute__((noreturn));
 
 #endif /* DARAN_FW_BOARD_H */

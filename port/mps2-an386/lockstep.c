@@ -47,7 +47,7 @@ bool daran_fw_lockstep_take(uint8_t byte)
     if (byte == (uint8_t)'\n') {
         in_directive = false;
         directive_ready = true;
-        board_uart0_rx_irq_enable(false);
+        daran_board_uart0_rx_irq_enable(false);
     } else if (directive_len < DIRECTIVE_MAX) {
         directive[directive_len++] = (char)byte;
     }
@@ -147,7 +147,7 @@ static void run_directive(const char *p, const char *end)
         break;
     }
     case 'x':
-        board_exit(0);
+        daran_board_exit(0);
     default:
         break;
     }
@@ -167,6 +167,6 @@ bool daran_fw_lockstep_run(void)
     (void)daran_poll(&daran_fw_drive);
     run_directive(directive, directive + directive_len);
     directive_ready = false;
-    board_uart0_rx_irq_enable(true);
+    daran_board_uart0_rx_irq_enable(true);
     return true;
 }

@@ -53,7 +53,7 @@ static volatile bool rx_paused;
 static void reply_to_uart(void *ctx, const char *line, size_t len)
 {
     (void)ctx;
-    board_uart0_write(line, len);
+    daran_board_uart0_write(line, len);
 }
 
 void daran_fw_start_drive(void)
@@ -61,7 +61,7 @@ void daran_fw_start_drive(void)
     /* Fails only for a NULL pointer or HAL member: a build error, really. */
     if (daran_init(&daran_fw_drive, &daran_sim_hal, &daran_fw_plant, reply_to_uart, NULL) !=
         DARAN_OK) {
-        board_fatal(5);
+        daran_board_fatal(5);
     }
 }
 
@@ -70,11 +70,11 @@ void daran_fw_uart0_rx_isr(void)
     uint8_t byte;
     rx_seen = true;
     if (rx_queued - rx_drained >= DARAN_RX_RING_SIZE - 1u) {
-        board_uart0_rx_irq_enable(false);
+        daran_board_uart0_rx_irq_enable(false);
         rx_paused = true;
         return;
     }
-    byte = board_uart0_take_rx();
+    byte = daran_board_uart0_take_rx();
 #if DARAN_FW_LOCKSTEP
     if (daran_fw_lockstep_take(byte)) {
         return;
@@ -97,7 +97,7 @@ static bool poll_drive(void)
     rx_drained = queued_before;
     if (rx_paused && !daran_fw_rx_held_by_directive()) {
         rx_paused = false;
-        board_uart0_rx_irq_enable(true);
+        daran_board_uart0_rx_irq_enable(true);
     }
     return lines > 0u;
 }
@@ -122,9 +122,9 @@ int main(void)
 {
     daran_sim_drive_init(&daran_fw_plant, 0u, DARAN_FW_TICK_HZ);
     daran_fw_start_drive();
-    board_uart0_init(DARAN_FW_BAUD);
+    daran_board_uart0_init(DARAN_FW_BAUD);
 #if !DARAN_FW_LOCKSTEP
-    board_systick_start(DARAN_FW_TICK_HZ);
+    daran_board_systick_start(DARAN_FW_TICK_HZ);
 #endif
     for (;;) {
         bool busy = run_due_ticks();
@@ -136,11 +136,11 @@ int main(void)
             /* Sleep until the next byte or tick. Interrupts are masked
              * around the last check so none slips in between it and the
              * WFI (a pending interrupt still ends the WFI). */
-            uint32_t primask = board_irq_save();
+            uint32_t primask = daran_board_irq_save();
             if (ticks_run == ticks_raised && !rx_seen) {
-                board_wait_for_interrupt();
+                daran_board_wait_for_interrupt();
             }
-            board_irq_restore(primask);
+            daran_board_irq_restore(primask);
         }
     }
 }

@@ -7,8 +7,8 @@
 
 /* Interrupt handlers of the application; unset ones fall back to the
  * default handler. */
-void daran_fw_systick_isr(void) __attribute__((weak, alias("default_handler")));
-void daran_fw_uart0_rx_isr(void) __attribute__((weak, alias("default_handler")));
+void daran_fw_systick_isr(void) __attribute__((weak, alias("daran_fw_default_handler")));
+void daran_fw_uart0_rx_isr(void) __attribute__((weak, alias("daran_fw_default_handler")));
 
 /* Symbols from mps2_an386.ld. */
 extern uint32_t __data_start[];
@@ -26,10 +26,10 @@ void daran_fw_reset(void);
 
 /* An exception nobody expected: stop where a debugger (or the test runner,
  * through semihosting) can see it, instead of running on in a bad state. */
-void default_handler(void);
-void default_handler(void)
+void daran_fw_default_handler(void);
+void daran_fw_default_handler(void)
 {
-    board_fatal(3);
+    daran_board_fatal(3);
 }
 
 void daran_fw_reset(void)
@@ -54,7 +54,7 @@ void daran_fw_reset(void)
         }
     }
     (void)main();
-    board_fatal(4);
+    daran_board_fatal(4);
 }
 
 typedef void (*daran_fw_vector_t)(void);
@@ -65,25 +65,25 @@ __attribute__((section(".vectors"), used))
 static const daran_fw_vector_t vectors[16 + 32] = {
     (daran_fw_vector_t)(uintptr_t)__stack_top,
     daran_fw_reset,
-    default_handler, /* NMI */
-    default_handler, /* HardFault */
-    default_handler, /* MemManage */
-    default_handler, /* BusFault */
-    default_handler, /* UsageFault */
+    daran_fw_default_handler, /* NMI */
+    daran_fw_default_handler, /* HardFault */
+    daran_fw_default_handler, /* MemManage */
+    daran_fw_default_handler, /* BusFault */
+    daran_fw_default_handler, /* UsageFault */
     0, 0, 0, 0,      /* reserved */
-    default_handler, /* SVCall */
-    default_handler, /* DebugMonitor */
+    daran_fw_default_handler, /* SVCall */
+    daran_fw_default_handler, /* DebugMonitor */
     0,               /* reserved */
-    default_handler, /* PendSV */
+    daran_fw_default_handler, /* PendSV */
     daran_fw_systick_isr,
     daran_fw_uart0_rx_isr, /* IRQ 0: UART0 RX */
-    default_handler,    /* IRQ 1: UART0 TX */
-    default_handler, default_handler, default_handler, default_handler,
-    default_handler, default_handler, default_handler, default_handler,
-    default_handler, default_handler, default_handler, default_handler,
-    default_handler, default_handler, default_handler, default_handler,
-    default_handler, default_handler, default_handler, default_handler,
-    default_handler, default_handler, default_handler, default_handler,
-    default_handler, default_handler, default_handler, default_handler,
-    default_handler, default_handler,
+    daran_fw_default_handler,    /* IRQ 1: UART0 TX */
+    daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler,
+    daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler,
+    daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler,
+    daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler,
+    daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler,
+    daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler,
+    daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler, daran_fw_default_handler,
+    daran_fw_default_handler, daran_fw_default_handler,
 };

@@ -91,17 +91,17 @@ static size_t lengths[sizeof lines / sizeof lines[0]];
 
 int main(void)
 {
-    board_uart0_init(115200u);
+    daran_board_uart0_init(115200u);
     values[DARAN_PROP_CAN_NODE_ID].u32 = 1u;
     values[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
     values[DARAN_PROP_UART_BAUDRATE].u32 = 115200u;
     if (daran_init(&drive, &perf_hal, NULL, drop_reply, NULL) != DARAN_OK) {
-        board_exit(1);
+        daran_board_exit(1);
     }
     for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
         lengths[i] = strlen(lines[i].text); /* outside the measured intervals */
     }
-    (void)board_irq_save(); /* nothing may run between markers but the line */
+    (void)daran_board_irq_save(); /* nothing may run between markers but the line */
     daran_perf_mark();
     daran_perf_mark(); /* empty interval: the marker's own cost */
     for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
@@ -110,9 +110,9 @@ int main(void)
         daran_perf_mark();
     }
     for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
-        board_uart0_write(lines[i].label, strlen(lines[i].label));
-        board_uart0_write("\t", 1u);
-        board_uart0_write(lines[i].text, strlen(lines[i].text));
+        daran_board_uart0_write(lines[i].label, strlen(lines[i].label));
+        daran_board_uart0_write("\t", 1u);
+        daran_board_uart0_write(lines[i].text, strlen(lines[i].text));
     }
-    board_exit(0);
+    daran_board_exit(0);
 }

@@ -9,7 +9,7 @@
 
 void selftest_write(const char *bytes, size_t len)
 {
-    board_uart0_write(bytes, len);
+    daran_board_uart0_write(bytes, len);
 }
 
 void selftest_print(const char *text)
@@ -76,7 +76,7 @@ static uint32_t stack_used(void)
 int main(void)
 {
     selftest_tally_t tally = {0u, 0u};
-    board_uart0_init(115200u);
+    daran_board_uart0_init(115200u);
     paint_stack();
     selftest_protocol_cases(&tally);
     selftest_number_cases(&tally);
@@ -87,5 +87,5 @@ int main(void)
     selftest_print(" passed, ");
     selftest_print_u32(tally.failed);
     selftest_print(" failed\n");
-    board_exit(tally.failed == 0u && tally.passed > 0u ? 0 : 1);
+    daran_board_exit(tally.failed == 0u && tally.passed > 0u ? 0 : 1);
 }
