@@ -36,7 +36,7 @@ void daran_board_uart0_init(uint32_t baud)
 {
     UART_CTRL = 0u;
     /* The CMSDK UART refuses divisors below 16. */
-    UART_BAUDDIV = BOARD_SYSCLK_HZ / baud >= 16u ? BOARD_SYSCLK_HZ / baud : 16u;
+    UART_BAUDDIV = DARAN_BOARD_SYSCLK_HZ / baud >= 16u ? DARAN_BOARD_SYSCLK_HZ / baud : 16u;
     UART_INTSTATUS = UART_INT_RX | UART_INT_RX_OVERRUN;
     UART_CTRL = UART_CTRL_TX_EN | UART_CTRL_RX_EN | UART_CTRL_RX_INT_EN;
     /* The byte-input ISR outranks SysTick: a byte must be taken before the
@@ -81,7 +81,7 @@ void daran_board_uart0_write(const char *bytes, size_t len)
 void daran_board_systick_start(uint32_t hz)
 {
     SYST_CSR = 0u;
-    SYST_RVR = BOARD_SYSCLK_HZ / hz - 1u;
+    SYST_RVR = DARAN_BOARD_SYSCLK_HZ / hz - 1u;
     SYST_CVR = 0u;
     /* SysTick (exception 15) below the UART: priority 0x80. */
     SCB_SHPR3 = (SCB_SHPR3 & 0x00FFFFFFu) | (0x80u << 24);

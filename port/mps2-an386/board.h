@@ -8,7 +8,7 @@
 #include <stdint.h>
 
 /* Core clock of the AN386 image (and of QEMU's model of it). */
-#define BOARD_SYSCLK_HZ 25000000u
+#define DARAN_BOARD_SYSCLK_HZ 25000000u
 
 /* UART0, 8N1 at @p baud, receiver interrupt on (NVIC IRQ 0), transmitter
  * polled. */
