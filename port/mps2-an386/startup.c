@@ -22,7 +22,6 @@ int main(void);
 void daran_fw_reset(void);
 
 #define SCB_CPACR (*(volatile uint32_t *)0xE000ED88u)
-#define SCB_VTOR (*(volatile uint32_t *)0xE000ED08u)
 
 /* An exception nobody expected: stop where a debugger (or the test runner,
  * through semihosting) can see it, instead of running on in a bad state. */
