@@ -75,6 +75,11 @@ cmp -s "$tmp/out" "$tmp/again" || fail "replay to stdout differs"
 rc=$?
 [ "$rc" -eq 1 ] || fail "replay on another bus: exit status $rc, want 1 (differ)"
 
+# Recording the replay gives back the recording: same lines, same times.
+"$replay" --session "$tmp/rec.txt" > "$tmp/replayed-session"
+"$sim" --drives 3 --tick-hz 8000 --record "$tmp/rec2.txt" < "$tmp/replayed-session" > /dev/null 2>&1
+cmp -s "$tmp/rec.txt" "$tmp/rec2.txt" || fail "recording the replay changed the recording"
+
 # --record errors and --help
 "$sim" --record /nonexistent/dir/rec.txt < /dev/null > "$tmp/o" 2> "$tmp/e"
 rc=$?
