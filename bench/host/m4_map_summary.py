@@ -95,6 +95,21 @@ for image in ("empty", "daran", "daran-nohelp", "baseline"):
     flash, ram = rows[image]
     print("| %s | %d | %d | %d | %d |" % (image, flash, ram, flash - base_flash, ram - base_ram))
 print()
+core_flash = rows["daran"][0] - base_flash
+nohelp_flash = rows["daran-nohelp"][0] - base_flash
+budget = 8192
+if core_flash <= budget:
+    print("**Goal: core flash <= %d bytes: met** (%d bytes, %d to spare; %d without help text); "
+          "baseline %d bytes, %.1fx the core." % (budget, core_flash, budget - core_flash,
+                                                  nohelp_flash, rows["baseline"][0] - base_flash,
+                                                  (rows["baseline"][0] - base_flash) / core_flash))
+else:
+    print("**Goal: core flash <= %d bytes: missed** by %d bytes (%d bytes; %d without help text, "
+          "%s); baseline %d bytes, %.1fx the core." % (
+              budget, core_flash - budget, core_flash, nohelp_flash,
+              "within budget" if nohelp_flash <= budget else "still %d over" % (nohelp_flash - budget),
+              rows["baseline"][0] - base_flash, (rows["baseline"][0] - base_flash) / core_flash))
+print()
 print("Flash bytes kept per input (core = src/, baseline = bench/baseline/, main = m4_main.c):")
 print()
 origins = set()

@@ -129,6 +129,23 @@ def properties():
     return re.findall(r'X\(\w+,\s*"([^"]+)",\s*(SYSTEM|AXIS)', text)
 
 
+def verdict(families, sessions):
+    """The 10x goal, met or missed, and by how much."""
+    ours, base = sessions["reference"]
+    worst = min(families, key=lambda f: f[2] / f[1])
+    best = max(families, key=lambda f: f[2] / f[1])
+    met = ours * 10 <= base
+    text = ("**Goal: at least 10x fewer instructions per line than the baseline: %s.** "
+            "reference.txt: %s against %s, %.1fx" % ("met" if met else "missed", fmt(ours),
+                                                   fmt(base), base / ours))
+    if not met:
+        text += " (10x needs <= %s per line, %.0f%% fewer than now)" % (
+            fmt(base / 10), 100 * (1 - base / 10 / ours))
+    text += "; by family from %.1fx (%s) to %.1fx (%s)." % (
+        worst[2] / worst[1], worst[0], best[2] / best[1], best[0])
+    return text
+
+
 def families_table(driver, out, md):
     md.append("| family | lines | core: daran-ascii | core: baseline | core ratio | "
               "whole program: daran-ascii | whole program: baseline | whole ratio |")
@@ -151,6 +168,7 @@ def families_table(driver, out, md):
         f.write("# family  daran-ascii  baseline   (core instructions per line)\n")
         for label, ours, base in data:
             f.write('"%s" %.0f %.0f\n' % (label, ours, base))
+    return data
 
 
 def sessions_table(driver, md):
@@ -158,6 +176,7 @@ def sessions_table(driver, md):
               "core: baseline | ratio | whole program incl. start-up: daran-ascii | baseline |")
     md.append("|---|---:|---:|---:|---:|---:|---:|---:|")
     figures = {}
+    pairs = {}
     for name in SESSIONS:
         path = os.path.join(STREAMS, name + ".txt")
         n = lines_in(path)
@@ -168,12 +187,13 @@ def sessions_table(driver, md):
         ours_whole = callgrind(driver, ["ours", path]) / n
         base_whole = callgrind(driver, ["baseline", path]) / n
         figures[name] = ours_total
+        pairs[name] = (ours, base)
         md.append("| %s | %d | %s | %s | %s | %s | %s | %s |" % (
             name + ".txt", n, fmt(ours), fmt(poll), fmt(base), ratio(ours, base), fmt(ours_whole),
             fmt(base_whole)))
         print("  stream %-10s ours %7.0f poll %7.0f baseline %7.0f" % (name, ours, poll, base),
               flush=True)
-    return figures
+    return figures, pairs
 
 
 def lookup_table(driver, out, md):
@@ -295,12 +315,14 @@ def main():
               "program = extra instructions the driver program executes per line (stream "
               "reading excluded).")
     md.append("")
-    families_table(args.driver, args.out, md)
+    families = families_table(args.driver, args.out, md)
     md.append("")
     md.append("### Recorded sessions (a third of the lines checksummed)")
     md.append("")
-    figures = sessions_table(args.driver, md)
+    figures, pairs = sessions_table(args.driver, md)
     md.append("")
+    md.insert(2, verdict(families, pairs))
+    md.insert(3, "")
     md.append("### Where the instructions go (reference.txt, exclusive, top ten)")
     md.append("")
     profile_table(args.driver, md)
