@@ -9,6 +9,7 @@ sim=$1
 replay=$2
 tmp=$(mktemp -d)
 sim_pid=
+# shellcheck disable=SC2317 # called by the trap
 cleanup() {
     [ -n "$sim_pid" ] && kill "$sim_pid" 2> /dev/null
     rm -rf "$tmp"
@@ -112,7 +113,11 @@ if [ -e /dev/ptmx ]; then
         sleep 0.1
         printf '10\nf 1\n' >&"$port"
         echo 'g 1' >&"$keep" # a line on stdin is received too
-        read -r -t 5 reply <&"$port" || fail "--pty: no reply"
+        if read -r -t 5 reply <&"$port"; then
+            [ "$reply" = "0 0" ] || fail "--pty: reply '$reply' to f 1"
+        else
+            fail "--pty: no reply"
+        fi
         sleep 0.3
         exec {port}>&-
     else

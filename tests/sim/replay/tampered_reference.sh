@@ -19,7 +19,9 @@ check() { # NAME: the reference in $tmp/ref must be refused
     local rc=$?
     [ "$rc" -eq 1 ] || { fail "$name: exit status $rc, want 1"; cat "$tmp/err" >&2; }
     grep -q '^@@ ' "$tmp/diff" || fail "$name: no unified diff hunk"
-    grep -q '^--- ' "$tmp/diff" && grep -q '^+++ ' "$tmp/diff" || fail "$name: no diff header"
+    if ! grep -q '^--- ' "$tmp/diff" || ! grep -q '^+++ ' "$tmp/diff"; then
+        fail "$name: no diff header"
+    fi
 }
 
 "$replay" --sim "$sim" "$@" --expect "$expected" "$recording" > /dev/null 2>&1 ||
@@ -32,7 +34,9 @@ awk 'done || !match($0, /[0-9]/) { print; next }
     "$expected" > "$tmp/ref"
 cmp -s "$expected" "$tmp/ref" && fail "$name: the tampering changed nothing"
 check "$@"
-grep -q '^-' "$tmp/diff" && grep -q '^+' "$tmp/diff" || fail "$name: the diff shows no changed line"
+if ! grep -q '^-[^-]' "$tmp/diff" || ! grep -q '^+[^+]' "$tmp/diff"; then
+    fail "$name: the diff shows no changed line"
+fi
 
 name="last line missing"
 sed '$d' "$expected" > "$tmp/ref"
