@@ -21,7 +21,7 @@
 
 #include "daran_ascii.h"
 
-#define MOCK_CALLS_MAX 128
+#define MOCK_CALLS_MAX (DARAN_RX_RING_SIZE / 4 + 128) /* a ring full of "u 1" lines */
 #define MOCK_OUT_MAX 16384
 #define MOCK_FWD_MAX 32
 #define MOCK_INSTANCES 3

@@ -11,7 +11,11 @@ static const char *const per_word[] = {
     "t %d 10 0 25", "q %d 160 30 10", "p %d 10 5 3", "v %d 20 3 1", "c %d 5 0 1",
     "d %d 10 0 0.5 0.1 0.01", "ms %d 1 2 3", "mt %d 0", "mq %d 1", "mp %d 0", "mv %d", "mc %d",
     "r config.uart_baudrate %d", "w config.uart_baudrate 9600 %d", "ss %d", "se %d", "sr %d",
-    "sc %d", "sz %d", "st %d", "h %d", "f %d", "g %d", "i %d", "e %d", "u %d",
+    "sc %d", "sz %d", "st %d",
+#if DARAN_ENABLE_HELP
+    "h %d",
+#endif
+    "f %d", "g %d", "i %d", "e %d", "u %d",
     "r axis%d.output_shaft.input_pos", "w axis%d.output_shaft.input_pos 5",
 };
 #define N_WORDS (sizeof per_word / sizeof per_word[0])

@@ -265,6 +265,8 @@ static void run_script(run_result_t *r, size_t chunk, unsigned seed)
                 seed = seed * 1103515245u + 12345u;
                 c = 1 + (seed >> 16) % 23;
             }
+            if (c > DARAN_RX_RING_SIZE / 2)
+                c = DARAN_RX_RING_SIZE / 2;
             if (c > n - pos)
                 c = n - pos;
             assert_int_equal(daran_rx_write(&m->drive, all + pos, c), c);
@@ -340,9 +342,9 @@ static void test_ring_overrun_discards_the_damaged_line_as_too_long(void **state
     (void)state;
     mock_t *m = mock_new();
     mock_clear(m);
-    /* 40 lines of 5 bytes, never polled: the ring overflows inside a line */
-    char flood[200];
-    for (int i = 0; i < 40; i++)
+    /* 5-byte lines, never polled: the ring overflows inside a line */
+    char flood[(DARAN_RX_RING_SIZE / 5 + 15) * 5];
+    for (size_t i = 0; i < sizeof flood / 5; i++)
         memcpy(flood + 5 * i, "f 1 \n", 5);
     size_t queued = daran_rx_write(&m->drive, flood, sizeof flood);
     assert_true(queued < sizeof flood);
@@ -350,7 +352,8 @@ static void test_ring_overrun_discards_the_damaged_line_as_too_long(void **state
     assert_int_equal(daran_rx_dropped(&m->drive), sizeof flood - queued);
     (void)daran_poll(&m->drive);
     /* every whole line that fitted executes once */
-    char want[4096] = "";
+    static char want[DARAN_RX_RING_SIZE + 16];
+    want[0] = '\0';
     for (size_t i = 0; i < queued / 5; i++)
         strcat(want, "0 0\n");
     ASSERT_REPLY(m, want);
@@ -372,18 +375,19 @@ static void test_ring_overrun_never_executes_a_spliced_motion_line(void **state)
     (void)state;
     mock_t *m = mock_new();
     mock_clear(m);
-    /* 31 whole lines, then a motion line whose digits are lost to the overrun */
-    char fill[31 * 4 + 8];
-    for (int i = 0; i < 31; i++)
+    /* whole lines, then a motion line whose digits are lost to the overrun */
+    enum { WHOLE = (DARAN_RX_RING_SIZE - 4) / 4 };
+    char fill[WHOLE * 4 + 8];
+    for (int i = 0; i < WHOLE; i++)
         memcpy(fill + 4 * i, "u 1\n", 4);
-    memcpy(fill + 124, "t 1 9999", 8);
+    memcpy(fill + WHOLE * 4, "t 1 9999", 8);
     size_t queued = daran_rx_write(&m->drive, fill, sizeof fill);
     assert_true(queued < sizeof fill);
     assert_false(daran_rx_byte(&m->drive, '9'));
     assert_int_equal(daran_rx_dropped(&m->drive), sizeof fill - queued + 1);
     (void)daran_poll(&m->drive);
     ASSERT_REPLY(m, "");
-    assert_int_equal(mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG), 31);
+    assert_int_equal(mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG), WHOLE);
     mock_clear(m);
     /* what is left ("t 1 " or "t 1") + "0" would read as a valid line */
     (void)raw_write_poll(m, "0\n");

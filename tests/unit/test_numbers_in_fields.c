@@ -23,14 +23,18 @@ static void float_accepted_case(void **state)
 {
     const char *text = *state;
     mock_t *m = mock_new();
-    char line[DARAN_LINE_MAX + 1];
+    char line[256];
     float want = strtof(text, NULL);
     snprintf(line, sizeof line, "t 1 %s", text);
+    if (strlen(line) > DARAN_LINE_MAX)
+        skip(); /* a build with a shorter line cannot carry this number */
     const daran_move_t *mv = ASSERT_MOVE(m, line);
     mock_check(memcmp(&mv->pos_deg, &want, sizeof want) == 0, m, __FILE__, __LINE__,
                "pos_deg: expected %a, got %a", (double)want, (double)mv->pos_deg);
     /* the same number as a property value */
     snprintf(line, sizeof line, "w axis1.output_shaft.input_pos %s", text);
+    if (strlen(line) > DARAN_LINE_MAX)
+        return;
     daran_value_t v = ASSERT_SET(m, line, DARAN_PROP_INPUT_POS);
     mock_check(memcmp(&v.f32, &want, sizeof want) == 0, m, __FILE__, __LINE__,
                "value: expected %a, got %a", (double)want, (double)v.f32);
@@ -400,7 +404,8 @@ static void test_long_random_decimals_are_correctly_rounded(void **state)
     mock_t *m = mock_new();
     for (int i = 0; i < 1500; i++) {
         char num[100], line[140];
-        size_t len = 20 + rnd() % 70, dot = rnd() % len, k = 0;
+        size_t room = DARAN_LINE_MAX - 36 < 90 ? DARAN_LINE_MAX - 36 : 90;
+        size_t len = 20 + rnd() % (room - 20), dot = rnd() % len, k = 0;
         for (size_t j = 0; j < len; j++) {
             if (j == dot)
                 num[k++] = '.';

@@ -1,0 +1,50 @@
+#!/bin/sh
+# Runs the core's unit tests under other compile-time options of
+# daran_config.h (reply line end, ring and line sizes, help text off), each in
+# its own build directory (build/unit-opt-NAME), gcc + ASan + UBSan.
+# Usage: tests/unit/run_option_matrix.sh [NAME "FLAGS"]...   (no arguments: the
+# default matrix). Exit status: the number of option sets that failed.
+set -u
+src=$(cd "$(dirname "$0")/../.." && pwd)
+areas="framing checksum_and_words numbers_in_fields commands errors properties addressing states_and_queries api"
+
+run_one() {
+  name=$1
+  flags=$2
+  dir=$src/build/unit-opt-$name
+  if ! cmake -S "$src" -B "$dir" -G Ninja -DCMAKE_C_COMPILER=gcc -DCMAKE_BUILD_TYPE=Debug \
+      -DDARAN_SANITIZE=ON -DDARAN_BUILD_SIM=OFF -DDARAN_BUILD_DEMO=OFF \
+      -DCMAKE_C_FLAGS="$flags" > "$dir.configure.log" 2>&1; then
+    echo "$name: configure failed (see $dir.configure.log)"
+    return 1
+  fi
+  targets=""
+  for a in $areas; do targets="$targets tests/unit/unit_$a"; done
+  # shellcheck disable=SC2086
+  if ! ninja -C "$dir" $targets > "$dir.build.log" 2>&1; then
+    echo "$name: build failed (see $dir.build.log)"
+    return 1
+  fi
+  bad=0
+  for a in $areas; do
+    if ! "$dir/tests/unit/unit_$a" > "$dir.$a.log" 2>&1; then
+      echo "$name: unit_$a failed (see $dir.$a.log)"
+      bad=1
+    fi
+  done
+  [ $bad -eq 0 ] && echo "$name: all unit tests pass"
+  return $bad
+}
+
+failed=0
+if [ $# -eq 0 ]; then
+  set -- crlf "-DDARAN_REPLY_CRLF=1" \
+         small-ring "-DDARAN_RX_RING_SIZE=16 -DDARAN_LINE_MAX=200" \
+         big-ring "-DDARAN_RX_RING_SIZE=1024 -DDARAN_LINE_MAX=96" \
+         no-help "-DDARAN_ENABLE_HELP=0"
+fi
+while [ $# -ge 2 ]; do
+  run_one "$1" "$2" || failed=$((failed + 1))
+  shift 2
+done
+exit $failed
