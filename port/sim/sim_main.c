@@ -235,7 +235,8 @@ static void record_bytes(const char *bytes, size_t len)
     while (app.record != NULL && len > 0u) {
         const char *nl = memchr(bytes, '\n', len);
         size_t n = nl != NULL ? (size_t)(nl - bytes) : len;
-        if (app.record_partial_len + n > app.record_partial_cap) {
+        /* >=: the buffer exists even for an empty line (no NULL to memcpy) */
+        if (app.record_partial_len + n >= app.record_partial_cap) {
             size_t cap = app.record_partial_len + n + 256u;
             char *grown = realloc(app.record_partial, cap);
             if (grown == NULL) {
