@@ -5,27 +5,7 @@
 
 daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request)
 {
-    daran_value_t value;
-    daran_result_t result = daran_get(drive, request->prop, &value);
-    if (result != DARAN_OK) {
-        return result;
-    }
-    daran_reply_begin(drive);
-    switch (DARAN_PROPERTY_TYPE(daran_properties[request->prop])) {
-    case DARAN_TYPE_F32:
-        daran_reply_f32(drive, value.f32);
-        break;
-    case DARAN_TYPE_U64:
-        daran_reply_u64(drive, value.u64);
-        break;
-    case DARAN_TYPE_U32:
-    case DARAN_TYPE_BOOL:
-    default:
-        daran_reply_u64(drive, value.u32);
-        break;
-    }
-    daran_reply_end(drive);
-    return DARAN_OK;
+    return daran_reply_properties(drive, &request->prop, 1);
 }
 
 static bool in_set(uint64_t value, const uint32_t *set, size_t count)

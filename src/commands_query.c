@@ -1,9 +1,8 @@
 /* Queries: h f g i e. Each answers with values read from the HAL. */
 #include "internal.h"
 
-/* Read and reply the given properties on one line, separated by spaces. */
-static daran_result_t reply_properties(daran_drive_t *drive, const daran_prop_t *props,
-                                       size_t count)
+daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *props,
+                                      size_t count)
 {
     daran_value_t values[3];
     for (size_t i = 0; i < count; i++) {
@@ -37,14 +36,14 @@ daran_result_t daran_cmd_f(daran_drive_t *drive, const daran_request_t *request)
 {
     static const daran_prop_t props[] = {DARAN_PROP_POS_ESTIMATE, DARAN_PROP_VEL_ESTIMATE};
     (void)request;
-    return reply_properties(drive, props, 2);
+    return daran_reply_properties(drive, props, 2);
 }
 
 daran_result_t daran_cmd_g(daran_drive_t *drive, const daran_request_t *request)
 {
     static const daran_prop_t props[] = {DARAN_PROP_VBUS_VOLTAGE, DARAN_PROP_IQ_MEASURED};
     (void)request;
-    return reply_properties(drive, props, 2);
+    return daran_reply_properties(drive, props, 2);
 }
 
 daran_result_t daran_cmd_i(daran_drive_t *drive, const daran_request_t *request)
@@ -52,7 +51,7 @@ daran_result_t daran_cmd_i(daran_drive_t *drive, const daran_request_t *request)
     static const daran_prop_t props[] = {DARAN_PROP_FW_VERSION, DARAN_PROP_HW_VERSION,
                                          DARAN_PROP_SERIAL_NUMBER};
     (void)request;
-    return reply_properties(drive, props, 3);
+    return daran_reply_properties(drive, props, 3);
 }
 
 static const char *const flag_names[] = {

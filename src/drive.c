@@ -29,29 +29,15 @@ void daran_set_forward(daran_drive_t *drive, daran_forward_fn forward, void *ctx
 
 daran_result_t daran_process_line(daran_drive_t *drive, const char *text, size_t len)
 {
-    drive->reply_checksum = 0;
-    daran_line_t line = {text, len, len, 0};
-    daran_result_t result = DARAN_OK;
-    if (len > DARAN_LINE_MAX) {
-        result = DARAN_ERR_LINE_TOO_LONG;
+    /* The same road as received bytes: through the framer into the line
+     * buffer, so length, characters and checksum are judged in one place. A
+     * '\n' inside the text stops the framer; it is an invalid character here. */
+    daran_framer_reset(drive);
+    size_t taken = daran_framer_append(drive, (const uint8_t *)text, len);
+    if (taken < len) {
+        drive->line_flags |= DARAN_LINE_INVALID_BYTE;
     }
-    for (size_t i = 0; i < len && result == DARAN_OK; i++) {
-        uint8_t byte = (uint8_t)text[i];
-        if (!daran_byte_allowed(byte)) {
-            result = DARAN_ERR_INVALID_CHARACTER;
-        } else if (line.star_at == len) {
-            if (byte == '*') {
-                line.star_at = i;
-            } else {
-                line.xor_before_star = (uint8_t)(line.xor_before_star ^ byte);
-            }
-        }
-    }
-    if (result != DARAN_OK) {
-        daran_reply_error(drive, result);
-        return result;
-    }
-    return daran_execute_line(drive, &line);
+    return daran_framer_end_line(drive, false);
 }
 
 /* An `axisN.` path: N is the motor, the rest is looked up among the axis

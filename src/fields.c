@@ -1,16 +1,11 @@
 /* Splitting a line into blank-separated fields: views, never copies. */
 #include "internal.h"
 
-bool daran_is_blank(char c)
-{
-    return c == ' ' || c == '\t' || c == '\r';
-}
-
 void daran_split_fields(const char *text, size_t len, daran_fields_t *out)
 {
+    uint8_t count = 0;
     size_t i = 0;
-    out->count = 0;
-    while (i < len) {
+    for (;;) {
         while (i < len && daran_is_blank(text[i])) {
             i++;
         }
@@ -21,11 +16,12 @@ void daran_split_fields(const char *text, size_t len, daran_fields_t *out)
         while (i < len && !daran_is_blank(text[i])) {
             i++;
         }
-        if (out->count == DARAN_FIELDS_MAX) {
-            return; /* "too many" is all the caller needs to know */
+        if (count == DARAN_FIELDS_MAX) {
+            break; /* "too many" is all the caller needs to know */
         }
-        out->at[out->count].text = text + start;
-        out->at[out->count].len = (uint16_t)(i - start);
-        out->count++;
+        out->at[count].text = text + start;
+        out->at[count].len = (uint16_t)(i - start);
+        count++;
     }
+    out->count = count;
 }

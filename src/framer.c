@@ -52,7 +52,7 @@ size_t daran_framer_append(daran_drive_t *drive, const uint8_t *bytes, size_t n)
     return i;
 }
 
-void daran_framer_end_line(daran_drive_t *drive, bool damaged)
+daran_result_t daran_framer_end_line(daran_drive_t *drive, bool damaged)
 {
     uint8_t flags = drive->line_flags;
     daran_line_t line = {drive->line, drive->line_len, drive->star_at, drive->line_xor};
@@ -61,11 +61,14 @@ void daran_framer_end_line(daran_drive_t *drive, bool damaged)
     }
     daran_framer_reset(drive);
     drive->reply_checksum = 0;
+    daran_result_t result;
     if (damaged || (flags & DARAN_LINE_TOO_LONG) != 0u) {
-        daran_reply_error(drive, DARAN_ERR_LINE_TOO_LONG);
+        result = DARAN_ERR_LINE_TOO_LONG;
     } else if ((flags & DARAN_LINE_INVALID_BYTE) != 0u) {
-        daran_reply_error(drive, DARAN_ERR_INVALID_CHARACTER);
+        result = DARAN_ERR_INVALID_CHARACTER;
     } else {
-        (void)daran_execute_line(drive, &line);
+        return daran_execute_line(drive, &line);
     }
+    daran_reply_error(drive, result);
+    return result;
 }

@@ -87,7 +87,12 @@ uint8_t daran_xor(const char *text, size_t len);
 daran_result_t daran_checksum_check(const daran_line_t *line, uint8_t *has_checksum);
 
 /* fields.c */
-bool daran_is_blank(char c);
+/* A blank in a line the framer accepted: space, tab or '\r' are the only
+ * accepted bytes at or below ' ', so one comparison tells. */
+static inline bool daran_is_blank(char c)
+{
+    return (unsigned char)c <= (unsigned char)' ';
+}
 /* Printable ASCII, tab or '\r': branch-light, for the per-byte path. */
 static inline bool daran_byte_allowed(uint8_t byte)
 {
@@ -121,8 +126,9 @@ void daran_framer_reset(daran_drive_t *drive);
 /* Append bytes[0..n) to the line up to, not including, the first '\n';
  * returns how many bytes it took (n when there was no '\n'). */
 size_t daran_framer_append(daran_drive_t *drive, const uint8_t *bytes, size_t n);
-/* The line's '\n' arrived: reject or run the line, reset the framer. */
-void daran_framer_end_line(daran_drive_t *drive, bool damaged);
+/* The line's '\n' arrived: reject or run the line, reset the framer.
+ * Returns what daran_process_line() returns. */
+daran_result_t daran_framer_end_line(daran_drive_t *drive, bool damaged);
 
 /* drive.c: a framed line whose length and characters are known good. */
 daran_result_t daran_execute_line(daran_drive_t *drive, const daran_line_t *line);
@@ -158,6 +164,11 @@ typedef enum daran_shape {
  * shape and build its move; the first failing value answers (D11). */
 daran_result_t daran_shape_move(daran_shape_t shape, const float *values, uint8_t count,
                                 daran_move_t *move);
+
+/* Read @p count properties and reply them on one line, separated by spaces,
+ * each formatted by its type (`r`, `f`, `g`, `i`). */
+daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *props,
+                                      size_t count);
 
 /* The handlers, one per command family; command->arg selects the shape or
  * action. */

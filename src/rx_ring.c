@@ -56,29 +56,9 @@ bool daran_rx_byte(daran_drive_t *drive, uint8_t byte)
 size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
 {
     const uint8_t *bytes = (const uint8_t *)data;
-    daran_rx_ring_t *ring = &drive->rx;
-    size_t i = 0;
-    if (!ring->producer_dropping) {
-        /* Fast path: copy what fits, publish once. */
-        uint16_t head = ring->head;
-        size_t room = DARAN_RX_RING_SIZE - (uint16_t)(head - ring->tail);
-        size_t fits = len < room ? len : room;
-        for (; i < fits; i++) {
-            uint16_t slot = (uint16_t)(head & MASK);
-            ring->bytes[slot] = bytes[i];
-            if (bytes[i] == '\n') {
-                mark_newline(ring, slot, false);
-            }
-            head++;
-        }
-        FENCE();
-        ring->head = head;
-    }
-    size_t queued = i;
-    for (; i < len; i++) { /* full, or finishing a damaged line */
-        if (daran_rx_byte(drive, bytes[i])) {
-            queued++;
-        }
+    size_t queued = 0;
+    for (size_t i = 0; i < len; i++) {
+        queued += daran_rx_byte(drive, bytes[i]) ? 1u : 0u;
     }
     return queued;
 }
