@@ -66,3 +66,10 @@ echo "Measured on commit $commit$dirty, $($cc --version | head -1), newlib-nano;
 echo "\`$cflags\`, link \`$ldflags\` (+ \`-u _printf_float -u _scanf_float\` for the baseline)."
 echo
 python3 bench/host/m4_map_summary.py "$out"
+echo
+echo "\`arm-none-eabi-size\` of the four images:"
+echo
+echo '```'
+(cd "$out" && arm-none-eabi-size empty.elf daran.elf daran-nohelp.elf baseline.elf)
+echo '```'
+
