@@ -345,9 +345,20 @@ unsigned mock_xor(const char *s)
 
 char *mock_with_checksum(char *buf, size_t size, const char *payload)
 {
-    char tmp[512];
-    snprintf(tmp, sizeof tmp, "%s ", payload);
-    snprintf(buf, size, "%s*%u", tmp, mock_xor(tmp));
+    size_t n = strlen(payload);
+    assert_true(n + 6 <= size);
+    memcpy(buf, payload, n);
+    buf[n] = ' ';
+    buf[n + 1] = '\0';
+    unsigned x = mock_xor(buf);
+    buf[n + 1] = '*';
+    size_t k = n + 2;
+    if (x >= 100)
+        buf[k++] = (char)('0' + x / 100);
+    if (x >= 10)
+        buf[k++] = (char)('0' + x / 10 % 10);
+    buf[k++] = (char)('0' + x % 10);
+    buf[k] = '\0';
     return buf;
 }
 

@@ -367,11 +367,11 @@ static void test_midpoints_between_floats_round_to_nearest_even(void **state)
         size_t n = strlen(exact);
         while (n > 0 && exact[n - 1] == '0')
             n--;
-        if (exact[n - 1] == '.')
+        if (n > 0 && exact[n - 1] == '.')
             n--;
-        exact[n] = '\0';
-        if (n > 90)
+        if (n == 0 || n > 90)
             continue;
+        exact[n] = '\0';
         const char *variants[3] = {"", "00000000000000001", NULL};
         for (int v = 0; v < 3; v++) {
             if (v < 2) {
