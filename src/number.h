@@ -39,4 +39,8 @@ size_t daran_format_f32(float value, char *buf);
  * length. */
 size_t daran_format_u64(uint64_t value, char *buf);
 
+/* The leading 64 bits of 10^q, truncated, for q = -64..45: the scale the
+ * parser and the printer multiply by. Internal; exposed for its test. */
+uint64_t daran_pow10_hi(int32_t q);
+
 #endif /* DARAN_NUMBER_H */

@@ -115,7 +115,7 @@ static void check_round_odd(uint32_t bits)
     int irregular = frac == 0 && exf > 1;
     int32_t k = floor_shift(q * INT32_C(1262611) - (irregular ? INT32_C(524031) : 0), 22);
     int32_t h = q + floor_log2_pow10(-k) + 1;
-    uint64_t g = daran_pow10_hi[-k - DARAN_POW10_MIN] + 1u;
+    uint64_t g = daran_pow10_hi(-k) + 1u;
     uint32_t cbs[3];
     int i;
     if (h < 1 || h > 4) {
