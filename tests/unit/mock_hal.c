@@ -523,6 +523,17 @@ void mock_assert_move_equals(const mock_t *m, const daran_move_t *got,
                (double)w->kd, (double)got->kd);
 }
 
+bool mock_uses_multi(const char *line)
+{
+    while (*line == ' ' || *line == '\t')
+        line++;
+    if (line[0] != 'm' && line[0] != 'M')
+        return false;
+    char c = (char)(line[1] | 0x20);
+    return strchr("stqpvc", c) != NULL && c != '\0' &&
+           (line[2] == ' ' || line[2] == '\t' || line[2] == '*' || line[2] == '\0');
+}
+
 /* ---- table-generated suites ---- */
 
 void mock_suite_add(mock_suite_t *s, CMUnitTestFunction fn, void *state, const char *fmt, ...)

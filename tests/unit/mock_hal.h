@@ -163,6 +163,20 @@ void mock_assert_move_equals(const mock_t *m, const daran_move_t *got,
         mock_assert_move_equals((m), (got), &want_, __FILE__, __LINE__);   \
     } while (0)
 
+/* True when the line's command word is a multi-motor one (ms mt mq mp mv mc). */
+bool mock_uses_multi(const char *line);
+/* Tests of the multi-motor commands skip themselves in a build without them. */
+#define SKIP_IF_NO_MULTI()                \
+    do {                                  \
+        if (!DARAN_ENABLE_MULTI_MOTOR)    \
+            skip();                       \
+    } while (0)
+#define SKIP_LINE_IF_NO_MULTI(line)                                \
+    do {                                                           \
+        if (!DARAN_ENABLE_MULTI_MOTOR && mock_uses_multi(line))    \
+            skip();                                                \
+    } while (0)
+
 /* Tests generated from tables: a CMUnitTest list with names built at run
  * time, so every row is its own case. */
 typedef struct mock_suite {

@@ -1,7 +1,9 @@
 #!/bin/sh
 # Runs the core's unit tests under other compile-time options of
-# daran_config.h (reply line end, ring and line sizes, help text off), each in
-# its own build directory (build/unit-opt-NAME), gcc + ASan + UBSan.
+# daran_config.h (reply line end, ring and line sizes, help text or the
+# multi-motor commands left out), each in its own build directory
+# (build/unit-opt-NAME), gcc + ASan + UBSan. Tests of a feature that is
+# compiled out skip themselves.
 # Usage: tests/unit/run_option_matrix.sh [NAME "FLAGS"]...   (no arguments: the
 # default matrix). Exit status: the number of option sets that failed.
 set -u
@@ -41,7 +43,8 @@ if [ $# -eq 0 ]; then
   set -- crlf "-DDARAN_REPLY_CRLF=1" \
          small-ring "-DDARAN_RX_RING_SIZE=16 -DDARAN_LINE_MAX=200" \
          big-ring "-DDARAN_RX_RING_SIZE=1024 -DDARAN_LINE_MAX=96" \
-         no-help "-DDARAN_ENABLE_HELP=0"
+         no-help "-DDARAN_ENABLE_HELP=0" \
+         no-multi "-DDARAN_ENABLE_MULTI_MOTOR=0"
 fi
 while [ $# -ge 2 ]; do
   run_one "$1" "$2" || failed=$((failed + 1))

@@ -28,8 +28,11 @@ static bool is_read(const char *fmt)
 static void other_id_case(void **state)
 {
     const char *fmt = *state;
+    SKIP_LINE_IF_NO_MULTI(fmt);
     mock_t *m = mock_new();
+#if DARAN_ENABLE_MULTI_MOTOR
     ASSERT_SILENT(m, "ms 1 10 1 5"); /* a preset must not make a start for others act */
+#endif
     char line[80];
     static const int others[] = {2, 63, 10};
     for (size_t i = 0; i < 3; i++) {
@@ -57,6 +60,7 @@ static void other_id_case(void **state)
 static void own_and_common_id_case(void **state)
 {
     const char *fmt = *state;
+    SKIP_LINE_IF_NO_MULTI(fmt);
     char line[80];
     for (int id = 1; id >= 0; id--) {
         mock_t *m = mock_new();
@@ -94,6 +98,7 @@ static void own_and_common_id_case(void **state)
 static void test_broadcast_is_forwarded_even_when_refused_here(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     mock_enable_forward(m);
     ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
@@ -143,6 +148,7 @@ static void test_forward_hook_can_be_removed(void **state)
 static void test_lines_for_another_drive_are_forwarded_unchecked(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     mock_enable_forward(m);
     static const char *const lines[] = {"t 2 abc", "t 2 1 2 3 4 5 6", "r axis2.nope",
@@ -224,6 +230,7 @@ static void test_two_drives_on_one_link_answer_only_their_own_lines(void **state
 static void test_interleaved_bytes_of_different_streams_do_not_mix(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *a = mock_new_slot(0, 1), *b = mock_new_slot(1, 2), *c = mock_new_slot(2, 3);
     a->props[DARAN_PROP_VBUS_VOLTAGE].f32 = 12.0f;
     b->props[DARAN_PROP_VBUS_VOLTAGE].f32 = 48.0f;

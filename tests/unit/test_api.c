@@ -76,6 +76,7 @@ static void test_init_rejects_a_hal_with_a_null_member(void **state)
 static void test_init_resets_ring_partial_line_and_preset(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
     assert_int_equal(daran_rx_write(&m->drive, "f ", 2), 2);

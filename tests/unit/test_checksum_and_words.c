@@ -39,6 +39,7 @@ static void test_spec_example_write_with_checksum_is_accepted(void **state)
 static void test_checksum_may_follow_the_last_field_directly(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 30 1.4142135623730951 10 *24");
     const daran_move_t *mv = ASSERT_MOVE(m, "mq 0 1*29");
@@ -67,6 +68,7 @@ static void test_checksum_mismatch_answers_with_a_checksum_and_has_no_effect(voi
 static void test_bad_checksum_has_no_effect_on_any_command(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     static const char *const lines[] = {"st 1", "ss 1", "w axis0.config.can_node_id 5",
                                         "v 1 20 3 1", "ms 1 1 2 3", "u 1", "sz 1"};
@@ -157,6 +159,7 @@ static void test_value_reply_checksum_covers_the_payload_and_the_space(void **st
 static void test_error_reply_to_a_checksummed_line_carries_a_checksum(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     static const char *const cases[][2] = {
         {"x 1", "error: unknown command"},
@@ -198,6 +201,7 @@ static void test_line_that_is_only_a_checksum_is_an_unknown_command(void **state
 static void test_checksummed_silent_commands_stay_silent(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     char line[80];
     ASSERT_ACTION(m, mock_with_checksum(line, sizeof line, "ss 1"), DARAN_ACTION_SAVE_CONFIG);
@@ -260,6 +264,7 @@ static void test_trailing_space_before_the_checksum_is_part_of_the_xor(void **st
 static void test_too_many_fields_is_invalid_command_format(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_ERROR(m, "t 1 10 0 25 1", "invalid command format");
     ASSERT_ERROR(m, "d 1 1 2 3 4 5 6", "invalid command format");
@@ -273,6 +278,7 @@ static void test_too_many_fields_is_invalid_command_format(void **state)
 static void test_too_few_fields_is_invalid_command_format(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_ERROR(m, "t 1", "invalid command format");
     ASSERT_ERROR(m, "q 1", "invalid command format");
@@ -288,6 +294,7 @@ static void test_too_few_fields_is_invalid_command_format(void **state)
 static void test_command_words_are_case_insensitive(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_ACTION(m, "SS 1", DARAN_ACTION_SAVE_CONFIG);
     ASSERT_ACTION(m, "Ss 1", DARAN_ACTION_SAVE_CONFIG);
@@ -306,6 +313,7 @@ static void test_command_words_are_case_insensitive(void **state)
 static void test_every_command_word_works_in_upper_case(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     static const char *const lines[] = {
         "T 1 10", "Q 1 10", "P 1 10", "V 1 10", "C 1 1", "D 1 0 0 0 0 0", "MS 1 10 0 5",
         "MT 1 0", "MS 1 10 2 10", "MQ 1 1", "MS 1 10 0 0", "MP 1 0", "MS 1 1 0 1", "MV 1",
@@ -324,6 +332,28 @@ static void test_every_command_word_works_in_upper_case(void **state)
         mock_check(m->n_calls > 0 || m->n_writes > 0 || lines[i][1] == 'S', m, __FILE__, __LINE__,
                    "the command must have run");
     }
+}
+
+static void test_multi_motor_words_follow_the_build_option(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    static const char *const lines[] = {"ms 1 10 0 5", "mt 1 0", "mq 1 1", "mp 1 0", "mv 1",
+                                        "mc 1", "ms 2 1 2 3", "mt 0 0"};
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        assert_true(mock_uses_multi(lines[i]));
+        if (DARAN_ENABLE_MULTI_MOTOR) {
+            mock_send_line(m, lines[i]);
+            mock_check(strstr(m->out, "unknown command") == NULL, m, __FILE__, __LINE__,
+                       "multi-motor commands are built in");
+        } else {
+            ASSERT_ERROR(m, lines[i], "unknown command");
+        }
+    }
+    assert_false(mock_uses_multi("m 1"));
+    assert_false(mock_uses_multi("mx 1"));
+    assert_false(mock_uses_multi("msx 1"));
+    assert_true(mock_uses_multi("MQ 0 1*29"));
 }
 
 static void test_property_paths_are_case_sensitive(void **state)
@@ -386,6 +416,7 @@ int main(void)
     ADD(test_too_few_fields_is_invalid_command_format);
     ADD(test_command_words_are_case_insensitive);
     ADD(test_every_command_word_works_in_upper_case);
+    ADD(test_multi_motor_words_follow_the_build_option);
     ADD(test_property_paths_are_case_sensitive);
     for (size_t i = 0; i < sizeof unknown_words / sizeof unknown_words[0]; i++)
         mock_suite_add(&s, unknown_word_case, (void *)(uintptr_t)unknown_words[i],

@@ -77,6 +77,7 @@ static const example_t examples[] = {
 static void example_case(void **state)
 {
     const example_t *e = *state;
+    SKIP_LINE_IF_NO_MULTI(e->line);
     mock_t *m = mock_new_id(e->id);
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 42.25f;
     m->props[DARAN_PROP_IQ_MEASURED].f32 = 1.5f;
@@ -209,6 +210,7 @@ static void check_timed_move(const mock_t *m, const daran_move_t *mv, float targ
 static void test_spec_mq_example_moves_each_drive_to_arrive_together(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *a = mock_new_slot(0, 1), *b = mock_new_slot(1, 2);
     a->props[DARAN_PROP_POS_SETPOINT].f32 = 30.0f;
     b->props[DARAN_PROP_POS_SETPOINT].f32 = -20.0f;
@@ -229,6 +231,7 @@ static void test_spec_mq_example_moves_each_drive_to_arrive_together(void **stat
 static void test_mq_absolute_uses_the_distance_from_the_setpoint(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 10.0f;
     ASSERT_SILENT(m, "ms 1 40 2.5 10");
@@ -243,6 +246,7 @@ static void test_mq_absolute_uses_the_distance_from_the_setpoint(void **state)
 static void test_infeasible_mq_is_refused_with_no_motion(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 100 1 1");
     ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
@@ -253,6 +257,7 @@ static void test_infeasible_mq_is_refused_with_no_motion(void **state)
 static void test_mq_within_the_1e4_shortfall_runs_the_exact_triangle(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     /* A = 60, D = 30: the minimum duration is sqrt(2); 1.4142 falls short by 2e-5 relative */
     ASSERT_SILENT(m, "ms 1 30 1.4142 10");
@@ -266,6 +271,7 @@ static void test_mq_within_the_1e4_shortfall_runs_the_exact_triangle(void **stat
 static void test_mq_with_the_vendor_17_digit_minimum_duration_is_accepted(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 30 1.4142135623730951 10 ");
     const daran_move_t *mv = ASSERT_MOVE(m, "mq 0 1");
@@ -278,6 +284,7 @@ static void test_mq_with_the_vendor_17_digit_minimum_duration_is_accepted(void *
 static void test_mq_with_zero_distance_is_accepted(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 5.0f;
     ASSERT_SILENT(m, "ms 1 0 2 10");
@@ -297,6 +304,7 @@ static void test_mq_with_zero_distance_is_accepted(void **state)
 static void test_mq_duration_and_accel_must_be_positive(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     static const char *const presets[] = {"ms 1 10 0 10", "ms 1 10 -1 10", "ms 1 10 2 0",
                                           "ms 1 10 2 -3"};
@@ -309,6 +317,7 @@ static void test_mq_duration_and_accel_must_be_positive(void **state)
 static void test_mt_starts_a_filtered_move_with_the_preset_bandwidth(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 7.0f;
     ASSERT_SILENT(m, "ms 1 10 99 5");
@@ -324,6 +333,7 @@ static void test_mt_starts_a_filtered_move_with_the_preset_bandwidth(void **stat
 static void test_mp_starts_passthrough_with_the_preset_feed_forwards(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = -4.0f;
     ASSERT_SILENT(m, "ms 1 10 5 3");
@@ -337,6 +347,7 @@ static void test_mp_starts_passthrough_with_the_preset_feed_forwards(void **stat
 static void test_mv_starts_velocity_by_the_preset_mode(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 20 3 1");
     const daran_move_t *mv = ASSERT_MOVE(m, "mv 1");
@@ -353,6 +364,7 @@ static void test_mv_starts_velocity_by_the_preset_mode(void **state)
 static void test_mc_starts_torque_by_the_preset_mode(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 0.5 0 1");
     const daran_move_t *mv = ASSERT_MOVE(m, "mc 1");
@@ -372,6 +384,7 @@ static void test_mc_starts_torque_by_the_preset_mode(void **state)
 static void test_ms_stores_only_finite_values_and_makes_no_hal_call(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 1 2 3");
     ASSERT_SILENT(m, "ms 0 1 2 3");
@@ -383,6 +396,7 @@ static void test_ms_stores_only_finite_values_and_makes_no_hal_call(void **state
 static void test_a_later_ms_replaces_the_preset(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
     ASSERT_SILENT(m, "ms 1 20 0 6");
@@ -393,6 +407,7 @@ static void test_a_later_ms_replaces_the_preset(void **state)
 static void test_a_preset_for_another_drive_is_not_stored(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 2 10 0 5");
     ASSERT_ERROR(m, "mt 1 0", "no preset");
@@ -419,6 +434,7 @@ static void test_system_commands_make_their_action(void **state)
 static void test_reboot_clears_the_preset(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
     ASSERT_ACTION(m, "sr 1", DARAN_ACTION_REBOOT);
@@ -468,12 +484,14 @@ static void replay(const char *const *lines, size_t n)
 static void test_every_line_of_the_vendor_python_recording_is_accepted(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     replay(recording_python, sizeof recording_python / sizeof recording_python[0]);
 }
 
 static void test_every_line_of_the_vendor_stm32_recording_is_accepted(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     replay(recording_stm32, sizeof recording_stm32 / sizeof recording_stm32[0]);
 }
 

@@ -48,6 +48,9 @@ static const phrase_case_t phrase_cases[] = {
 static void phrase_case_run(void **state)
 {
     const phrase_case_t *c = *state;
+    SKIP_LINE_IF_NO_MULTI(c->line);
+    if (c->setup[0])
+        SKIP_LINE_IF_NO_MULTI(c->setup[0]);
     mock_t *m = mock_new();
     for (size_t i = 0; i < 3 && c->setup[i]; i++) {
         mock_send_line(m, c->setup[i]);
@@ -139,6 +142,7 @@ static const order_case_t order_cases[] = {
 static void order_case_run(void **state)
 {
     const order_case_t *c = *state;
+    SKIP_LINE_IF_NO_MULTI(c->line);
     mock_t *m = mock_new();
     if (c->preset) {
         mock_send_line(m, "ms 1 100 1 1"); /* an infeasible mq */
@@ -263,6 +267,7 @@ static void test_failed_node_id_getter_is_answered_as_that_error(void **state)
 static void test_relative_target_beyond_float_range_is_refused(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 3e38f;
     ASSERT_SILENT(m, "ms 1 3e38 0 5");
@@ -276,6 +281,7 @@ static void test_relative_target_beyond_float_range_is_refused(void **state)
 static void test_failed_setpoint_getter_refuses_a_relative_start(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
     mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_POS_SETPOINT);
@@ -287,6 +293,7 @@ static void test_failed_setpoint_getter_refuses_a_relative_start(void **state)
 static void test_refused_start_after_hal_failure_keeps_the_preset(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
     mock_fail(m, MOCK_FAIL_MOVE, 1, DARAN_ERR_MOTOR_FAULT, -1);

@@ -80,6 +80,7 @@ static void float_out_of_range_case(void **state)
 static void test_every_float_field_of_every_command_uses_the_grammar(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     static const char *const lines[] = {
         "t 1 x",        "t 1 10 x",       "t 1 10 0 x",     "q 1 x",          "q 1 10 x",
@@ -210,6 +211,7 @@ static const mode_case_t mode_cases[] = {
 static void mode_case_run(void **state)
 {
     const mode_case_t *c = *state;
+    SKIP_LINE_IF_NO_MULTI(c->line);
     mock_t *m = mock_new();
     if (c->error == NULL) {
         const daran_move_t *mv = ASSERT_MOVE(m, c->line);
@@ -222,6 +224,7 @@ static void mode_case_run(void **state)
 static void test_start_mode_accepts_integral_floats(void **state)
 {
     (void)state;
+    SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
     const daran_move_t *mv = ASSERT_MOVE(m, "mt 1 0.0");
