@@ -13,8 +13,11 @@ import argparse
 import hashlib
 import math
 import os
+import random
 import re
 import struct
+from decimal import Decimal
+from fractions import Fraction
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -86,6 +89,35 @@ def tuning_session():
     return lines
 
 
+def f32_neighbours(bits):
+    lo = struct.unpack("<f", struct.pack("<I", bits))[0]
+    hi = struct.unpack("<f", struct.pack("<I", bits + 1))[0]
+    return lo, hi
+
+
+def hard_decimals():
+    """Decimals at and next to the exact halfway point between two adjacent
+    float32s, where a parser must decide with all the digits (the slow path)."""
+    rnd = random.Random(6)
+    bits = [0x3F800000, 0x4B800000, 0x00000000, 0x00000001, 0x007FFFFF, 0x00800000,
+            0x7F7FFFFE, 0x3DCCCCCC, 0x42C80000]
+    bits += [rnd.randrange(1, 0x7F7FFFFF) for _ in range(12)]
+    out = []
+    for b in bits:
+        lo, hi = f32_neighbours(b)
+        mid = (Fraction(lo) + Fraction(hi)) / 2
+        d = Decimal(mid.numerator) / Decimal(mid.denominator)
+        exact = format(d.normalize(), "f") if abs(d) > Decimal("1e-10") else "%se0" % d
+        out.append(exact)
+        out.append(exact + "0000000000000000000001")
+        if len(exact) > 12:
+            out.append(exact[:-1])
+            out.append(exact[:40])
+    # the overflow boundary: FLT_MAX + half an ulp rounds to infinity
+    out += ["340282356779733661637539395458142568448", "340282356779733661637539395458142568447.9"]
+    return out
+
+
 def with_checksums(lines):
     out = []
     for l in lines:
@@ -123,6 +155,9 @@ def main():
     sessions["sync-move"] = synchronised_move()
     sessions["tuning"] = tuning_session()
     sessions["tuning-checksum"] = with_checksums(tuning_session())
+    # relative starts from a setpoint near FLT_MAX must be refused, not overflow
+    sessions["relative-overflow"] = ["w axis1.output_shaft.pos_setpoint 3e38", "ms 1 3e38 0 25",
+                                     "mt 1 1", "mp 1 1", "ms 1 -3e38 1 1", "mq 1 1", "f 1"]
 
     for name, lines in sessions.items():
         proto = protocol_only(lines)
@@ -146,6 +181,7 @@ def main():
                "18446744073709551616", "0.1e-0000000000000000000001", "1" + "0" * 60,
                "0." + "0" * 40 + "1", "4.9406564584124654e-324", "nan", "inf", "0x10", "1e",
                "--1", "1.5", "-1", "1.000000000000000000000000000001"]
+    numbers += hard_decimals()
     for t in numbers:
         write("number", b"\x00" + t.encode())
         write("number", b"\x01" + t.encode())
