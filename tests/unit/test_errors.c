@@ -2,6 +2,7 @@
  * no HAL setter/move/action, the check order of section 8 (a line with
  * several faults answers the first), and HAL fault injection (D26). */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "mock_hal.h"
@@ -303,6 +304,197 @@ static void test_refused_start_after_hal_failure_keeps_the_preset(void **state)
     assert_true(mv->pos_deg == 10.0f);
 }
 
+/* ---- random lines: invariants that hold for every line ---- */
+
+static uint32_t lcg = 2026u;
+static uint32_t pick(uint32_t n)
+{
+    lcg = lcg * 1103515245u + 12345u;
+    return (lcg >> 16) % n;
+}
+
+static const char *const phrases[] = {
+    "unknown command", "invalid command format", "invalid motor", "invalid value",
+    "value out of range", "invalid mode", "invalid property", "read only property",
+    "invalid checksum", "checksum mismatch", "line too long", "invalid character", "no preset",
+    "trajectory infeasible", "estop active", "motor fault", "motor idle",
+};
+
+static bool known_phrase(const char *p, size_t len)
+{
+    for (size_t i = 0; i < sizeof phrases / sizeof phrases[0]; i++)
+        if (strlen(phrases[i]) == len && memcmp(p, phrases[i], len) == 0)
+            return true;
+    return false;
+}
+
+typedef struct rword { const char *word; int min, max; } rword_t;
+
+static void random_line(char *line, size_t size, int *cks)
+{
+    /* words with their value counts after the id (r/w: after the path) */
+    static const rword_t words[] = {
+        {"t", 1, 3}, {"q", 1, 3}, {"p", 1, 3}, {"v", 1, 3}, {"c", 1, 3}, {"d", 5, 5},
+        {"ms", 3, 3}, {"mt", 1, 1}, {"mq", 1, 1}, {"mp", 1, 1}, {"mv", 0, 0}, {"mc", 0, 0},
+        {"r", 0, 1}, {"w", 1, 2}, {"ss", 0, 0}, {"se", 0, 0}, {"sr", 0, 0}, {"sc", 0, 0},
+        {"sz", 0, 0}, {"st", 0, 0}, {"h", 0, 0}, {"f", 0, 0}, {"g", 0, 0}, {"i", 0, 0},
+        {"e", 0, 0}, {"u", 0, 0}, {"T", 1, 3}, {"MQ", 1, 1}, {"x", 0, 2}, {"m", 0, 1}};
+    static const char *const ids[] = {"1", "1", "1", "0", "0", "2", "63", "64", "-1",
+                                      "1.5", "x", "01", "1.0"};
+    static const char *const good[] = {"0", "1", "2", "6", "10", "0.5", "25", "5.0", "120",
+                                       "-100", "0.02", "1", "8"};
+    static const char *const bad[] = {"-1", "-0", "1e39", "1e-45", "abc", ".", "3.5", "nan",
+                                      "115200", "9600", "7", "0"};
+    static const char *const paths[] = {
+        "axis1.output_shaft.input_pos", "axis0.config.can_node_id", "config.uart_baudrate",
+        "vbus_voltage", "axis1.requested_state", "axis1.controller.config.pos_gain",
+        "axis2.error", "axis1.nope", "axis64.x", "serial_number",
+        "axis1.controller.trajectory_done", "axis1.config.enable_watchdog"};
+    char payload[160];
+    size_t k = 0;
+    const rword_t *w = &words[pick(sizeof words / sizeof words[0])];
+    k += (size_t)snprintf(payload + k, sizeof payload - k, "%s%s", pick(4) ? "" : " ", w->word);
+    bool rw = (w->word[0] == 'r' || w->word[0] == 'w') && w->word[1] == '\0';
+    if (pick(12) != 0) /* the id or the path */
+        k += (size_t)snprintf(payload + k, sizeof payload - k, " %s",
+                              rw ? paths[pick(sizeof paths / sizeof paths[0])]
+                                 : ids[pick(sizeof ids / sizeof ids[0])]);
+    int nf = w->min + (int)pick((uint32_t)(w->max - w->min + 1));
+    if (pick(8) == 0)
+        nf += pick(2) ? 1 : -1;
+    for (int i = 0; i < nf; i++) {
+        const char *f = pick(5) ? good[pick(sizeof good / sizeof good[0])]
+                                : bad[pick(sizeof bad / sizeof bad[0])];
+        k += (size_t)snprintf(payload + k, sizeof payload - k, "%s%s", pick(6) ? " " : "\t ", f);
+    }
+    if (pick(3) == 0)
+        k += (size_t)snprintf(payload + k, sizeof payload - k, " ");
+    *cks = (int)pick(4); /* 0, 1: none; 2: right; 3: wrong or malformed */
+    if (*cks == 2) {
+        char tmp[200];
+        snprintf(tmp, sizeof tmp, "%s", payload);
+        snprintf(line, size, "%s*%u", tmp, mock_xor(tmp));
+    } else if (*cks == 3) {
+        static const char *const fields[] = {"*0", "*255", "*x", "*1234", "*", "*256"};
+        snprintf(line, size, "%s%s", payload, fields[pick(6)]);
+    } else {
+        snprintf(line, size, "%s", payload);
+    }
+}
+
+/* D4: 1 to 3 digits after the first '*', value <= 255, then only blanks. */
+static bool well_formed_checksum(const char *line)
+{
+    const char *star = strchr(line, '*');
+    if (star == NULL)
+        return false;
+    const char *d = star + 1;
+    unsigned v = 0, n = 0;
+    while (*d >= '0' && *d <= '9') {
+        v = v * 10u + (unsigned)(*d - '0');
+        d++;
+        n++;
+    }
+    while (*d == ' ' || *d == '\t' || *d == '\r')
+        d++;
+    return n >= 1 && n <= 3 && v <= 255 && *d == '\0';
+}
+
+static void test_random_lines_keep_every_invariant(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_enable_forward(m);
+    unsigned errors = 0, effects = 0, answers = 0, silent = 0;
+    for (int n = 0; n < 20000; n++) {
+        if (n % 500 == 0) {
+            m = mock_new();
+            mock_enable_forward(m);
+        }
+        /* state changes now and then: faults, idle, a preset */
+        switch (pick(40)) {
+        case 0: m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_ESTOP; break;
+        case 1: m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_UNDERVOLTAGE; break;
+        case 2: m->props[DARAN_PROP_AXIS_ERROR].u32 = 0; break;
+        case 3: m->props[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_IDLE; break;
+        case 4: m->props[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP; break;
+        default: break;
+        }
+        if (m->props[DARAN_PROP_CAN_NODE_ID].u32 != 1)
+            m->props[DARAN_PROP_CAN_NODE_ID].u32 = 1;
+        char line[220];
+        int cks;
+        random_line(line, sizeof line, &cks);
+        (void)cks;
+        if (strlen(line) > DARAN_LINE_MAX)
+            continue;
+        mock_send_line(m, line);
+        bool is_error = strncmp(m->out, "error: ", 7) == 0;
+        /* an error is one line, a known phrase, and has no effect at all */
+        if (is_error) {
+            mock_check(m->n_writes == 1, m, __FILE__, __LINE__, "one error line");
+            mock_check(m->n_calls == 0, m, __FILE__, __LINE__, "an error has no effect");
+            const char *ph = m->out + 7;
+            const char *end = strchr(ph, '\n');
+            const char *star = strstr(ph, " *");
+            size_t plen = (size_t)((star && star < end ? star : end) - ph);
+            mock_check(known_phrase(ph, plen), m, __FILE__, __LINE__, "unknown phrase");
+        }
+        /* every reply line carries a correct checksum iff the request had a well-formed one */
+        bool framing = is_error && (strstr(m->out, "line too long") || strstr(m->out, "invalid character") ||
+                                    strstr(m->out, "invalid checksum"));
+        const char *l = m->out;
+        while (*l) {
+            const char *end = strchr(l, '\n');
+            char one[DARAN_REPLY_MAX + 1];
+            size_t len = (size_t)(end - l);
+            memcpy(one, l, len);
+            one[len] = '\0';
+            char *star = strrchr(one, '*');
+            bool want = well_formed_checksum(line) && !framing;
+            mock_check((star != NULL) == want, m, __FILE__, __LINE__, "reply checksum presence");
+            if (star) {
+                unsigned sum = (unsigned)strtoul(star + 1, NULL, 10);
+                *star = '\0';
+                mock_check(star > one && star[-1] == ' ' && mock_xor(one) == sum, m, __FILE__,
+                           __LINE__, "reply checksum value");
+            }
+            l = end + 1;
+        }
+        /* what an accepted line may do: one set, one action, or a move then a feed */
+        if (!is_error && m->n_calls > 0) {
+            bool one_set = m->n_calls == 1 && m->calls[0].kind == MOCK_CALL_SET;
+            bool one_action = m->n_calls == 1 && m->calls[0].kind == MOCK_CALL_ACTION;
+            bool move_feed = m->n_calls == 2 && m->calls[0].kind == MOCK_CALL_MOVE &&
+                             m->calls[1].kind == MOCK_CALL_ACTION &&
+                             m->calls[1].action == DARAN_ACTION_FEED_WATCHDOG;
+            mock_check(one_set || one_action || move_feed, m, __FILE__, __LINE__,
+                       "unexpected HAL call sequence");
+            mock_check(m->out_len == 0, m, __FILE__, __LINE__, "a line with an effect is silent");
+        }
+        /* forwarded lines are the line as sent, for another id or a broadcast */
+        for (size_t i = 0; i < m->n_fwd; i++) {
+            mock_check(m->fwd[i].id != 1 && m->fwd[i].id <= DARAN_MOTOR_ID_MAX, m, __FILE__,
+                       __LINE__, "forwarded id");
+            mock_check(strcmp(m->fwd[i].line, line) == 0, m, __FILE__, __LINE__,
+                       "forwarded as received");
+        }
+        mock_check(m->n_fwd <= 1, m, __FILE__, __LINE__, "forwarded once");
+        if (is_error)
+            errors++;
+        else if (m->n_calls > 0)
+            effects++;
+        else if (m->out_len > 0)
+            answers++;
+        else
+            silent++;
+    }
+    print_message("random lines: %u errors, %u with an effect, %u answered, %u silent\n", errors,
+                  effects, answers, silent);
+    /* the generator must reach every outcome, or the invariants prove little */
+    assert_true(errors > 1000 && effects > 500 && answers > 200 && silent > 500);
+}
+
 int main(void)
 {
     static mock_suite_t s;
@@ -329,6 +521,7 @@ int main(void)
     ADD(test_failed_getter_of_a_query_answers_that_error);
     ADD(test_failed_state_getter_refuses_motion);
     ADD(test_failed_node_id_getter_is_answered_as_that_error);
+    ADD(test_random_lines_keep_every_invariant);
     ADD(test_relative_target_beyond_float_range_is_refused);
     ADD(test_failed_setpoint_getter_refuses_a_relative_start);
     ADD(test_refused_start_after_hal_failure_keeps_the_preset);
