@@ -116,6 +116,20 @@ static void malformed_checksum_case(void **state)
     ASSERT_REPLY(m, "0 0\n");
 }
 
+static void test_framing_errors_answer_without_a_checksum(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    /* D6: no field was parsed, so no checksum on the reply */
+    char line[DARAN_LINE_MAX + 40];
+    snprintf(line, sizeof line, "t 1 1\x01 *%u", mock_xor("t 1 1\x01 "));
+    ASSERT_ERROR(m, line, "invalid character");
+    memset(line, ' ', sizeof line);
+    memcpy(line, "f 1", 3);
+    snprintf(line + DARAN_LINE_MAX + 10, 16, "*%u", mock_xor(" ") /* any */);
+    ASSERT_ERROR(m, line, "line too long");
+}
+
 static void test_whitespace_after_checksum_digits_is_allowed(void **state)
 {
     (void)state;
@@ -401,6 +415,7 @@ int main(void)
     for (size_t i = 0; i < sizeof malformed_fields / sizeof malformed_fields[0]; i++)
         mock_suite_add(&s, malformed_checksum_case, (void *)(uintptr_t)malformed_fields[i],
                        "test_checksum_field_\"%s\"_is_an_invalid_checksum", malformed_fields[i]);
+    ADD(test_framing_errors_answer_without_a_checksum);
     ADD(test_whitespace_after_checksum_digits_is_allowed);
     ADD(test_checksum_with_leading_zeros_is_well_formed);
     ADD(test_value_reply_checksum_covers_the_payload_and_the_space);

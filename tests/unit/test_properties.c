@@ -449,6 +449,18 @@ static void test_a_path_for_another_drive_is_silent_whatever_it_names(void **sta
     ASSERT_SILENT(m, "r nope 2");
 }
 
+static void test_temperature_and_circular_limits_are_not_cross_checked(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    /* D15: a lower limit above the upper one is accepted as written */
+    (void)ASSERT_SET(m, "w axis1.fet_thermistor.config.temp_limit_upper 50", DARAN_PROP_FET_TEMP_LIMIT_UPPER);
+    (void)ASSERT_SET(m, "w axis1.fet_thermistor.config.temp_limit_lower 90", DARAN_PROP_FET_TEMP_LIMIT_LOWER);
+    (void)ASSERT_SET(m, "w axis1.motor_thermistor.config.temp_limit_lower -300", DARAN_PROP_MOTOR_TEMP_LIMIT_LOWER);
+    (void)ASSERT_SET(m, "w axis1.output_shaft.circular_setpoint_min 180", DARAN_PROP_CIRCULAR_SETPOINT_MIN);
+    (void)ASSERT_SET(m, "w axis1.output_shaft.circular_setpoint_max -180", DARAN_PROP_CIRCULAR_SETPOINT_MAX);
+}
+
 static void test_setpoint_write_reaches_the_hal_once(void **state)
 {
     (void)state;
@@ -497,6 +509,7 @@ int main(void)
     ADD(test_non_negative_accepts_negative_zero);
     ADD(test_unknown_paths_are_invalid_properties);
     ADD(test_a_path_for_another_drive_is_silent_whatever_it_names);
+    ADD(test_temperature_and_circular_limits_are_not_cross_checked);
     ADD(test_setpoint_write_reaches_the_hal_once);
     ADD(test_node_id_write_changes_the_address);
     return mock_suite_run(&s, "properties");
