@@ -43,6 +43,17 @@ typedef struct daran_rx_ring {
     uint8_t producer_dropping;                   /* producer only */
     volatile uint32_t dropped;                   /* bytes lost, producer only */
 } daran_rx_ring_t;
+/* The fields of the current line as offsets into it. They live in the
+ * instance, not on the stack: the line's road to the HAL is the core's
+ * deepest call chain. DARAN_FIELDS_MAX is the most fields a command has
+ * (d: word, id and 5 values) plus one to tell "too many". */
+#define DARAN_FIELDS_MAX 8u
+typedef struct daran_fields {
+    const char *base;
+    uint16_t start[DARAN_FIELDS_MAX];
+    uint16_t len[DARAN_FIELDS_MAX];
+    uint8_t count; /* fields found, saturating at DARAN_FIELDS_MAX */
+} daran_fields_t;
 /** @endcond */
 
 /** One drive. Size: sizeof(daran_drive_t), known at compile time. */
@@ -63,6 +74,7 @@ typedef struct daran_drive {
     uint8_t reply_checksum;  /* the current request carried a checksum field */
     uint8_t has_preset;
     float preset[3];
+    daran_fields_t fields;
     char line[DARAN_LINE_MAX];
     char reply[DARAN_REPLY_MAX];
     /** @endcond */

@@ -134,6 +134,19 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
     return DARAN_OK;
 }
 
+/* Build the move and run it. Kept out of daran_cmd_motion() so the move is not
+ * on the stack while the values are parsed: that chain is the core's deepest. */
+static DARAN_NOINLINE daran_result_t run_shape(daran_drive_t *drive, daran_shape_t shape_id,
+                                               const float *values, uint8_t count)
+{
+    daran_move_t move;
+    daran_result_t result = daran_shape_move(shape_id, values, count, &move);
+    if (result == DARAN_OK) {
+        result = daran_check_motion_allowed(drive);
+    }
+    return result != DARAN_OK ? result : daran_start_move(drive, &move);
+}
+
 daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *request)
 {
     daran_shape_t shape_id = (daran_shape_t)request->command->arg;
@@ -142,15 +155,11 @@ daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *req
     uint8_t count = (uint8_t)(fields->count - 2u);
     float values[5];
     for (uint8_t i = 0; i < count; i++) {
-        daran_result_t result = parse_value(&fields->at[2u + i], CHECK_OF(shape->value[i]), &values[i]);
+        daran_field_t field = daran_field_at(fields, 2u + i);
+        daran_result_t result = parse_value(&field, CHECK_OF(shape->value[i]), &values[i]);
         if (result != DARAN_OK) {
             return result;
         }
     }
-    daran_move_t move;
-    daran_result_t result = daran_shape_move(shape_id, values, count, &move);
-    if (result == DARAN_OK) {
-        result = daran_check_motion_allowed(drive);
-    }
-    return result != DARAN_OK ? result : daran_start_move(drive, &move);
+    return run_shape(drive, shape_id, values, count);
 }

@@ -89,7 +89,8 @@ daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)
     }
     daran_value_t value;
     value.u64 = 0;
-    daran_result_t result = parse_value(row, &request->fields->at[2], &value);
+    daran_field_t field = daran_field_at(request->fields, 2);
+    daran_result_t result = parse_value(row, &field, &value);
     if (result != DARAN_OK) {
         return result;
     }

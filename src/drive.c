@@ -71,13 +71,14 @@ static daran_result_t address_property(const daran_command_t *command,
         return DARAN_ERR_INVALID_FORMAT;
     }
     daran_field_t number;
-    if (split_axis_path(&fields->at[1], &number, name)) {
+    daran_field_t path = daran_field_at(fields, 1);
+    if (split_axis_path(&path, &number, name)) {
         *scope = DARAN_SCOPE_AXIS;
         *count_ok = fields->count == DARAN_MIN_FIELDS(command);
         return daran_field_motor(&number, &request->motor);
     }
     *scope = DARAN_SCOPE_SYSTEM;
-    *name = fields->at[1];
+    *name = path;
     if (fields->count == DARAN_MIN_FIELDS(command)) {
         *count_ok = true;
         request->motor = 0;
@@ -85,7 +86,8 @@ static daran_result_t address_property(const daran_command_t *command,
     }
     if (fields->count == DARAN_MAX_FIELDS(command)) {
         *count_ok = true;
-        return daran_field_motor(&fields->at[DARAN_MAX_FIELDS(command) - 1u], &request->motor);
+        daran_field_t id = daran_field_at(fields, DARAN_MAX_FIELDS(command) - 1u);
+        return daran_field_motor(&id, &request->motor);
     }
     return DARAN_ERR_INVALID_FORMAT;
 }
@@ -100,29 +102,31 @@ static daran_result_t own_id(daran_drive_t *drive, uint32_t *id)
 
 static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
 {
-    daran_fields_t fields;
-    daran_split_fields(line->text, line->star_at, &fields);
-    if (fields.count == 0u) {
+    daran_fields_t *fields = &drive->fields;
+    daran_split_fields(line->text, line->star_at, fields);
+    if (fields->count == 0u) {
         /* Blank lines are ignored; a checksum with no command is not (D5). */
         return drive->reply_checksum ? DARAN_ERR_UNKNOWN_COMMAND : DARAN_OK;
     }
-    const daran_command_t *command = daran_find_command(&fields.at[0]);
+    daran_field_t word = daran_field_at(fields, 0);
+    const daran_command_t *command = daran_find_command(&word);
     if (command == NULL) {
         return DARAN_ERR_UNKNOWN_COMMAND;
     }
 
-    daran_request_t request = {command, &fields, 0, DARAN_PROP_COUNT};
+    daran_request_t request = {command, fields, 0, DARAN_PROP_COUNT};
     daran_result_t result;
     bool count_ok;
     daran_scope_t scope = DARAN_SCOPE_SYSTEM;
     daran_field_t name = {NULL, 0};
     if ((command->flags & DARAN_CMD_PATH) != 0u) {
-        result = address_property(command, &fields, &request, &count_ok, &scope, &name);
-    } else if (fields.count < 2u) {
+        result = address_property(command, fields, &request, &count_ok, &scope, &name);
+    } else if (fields->count < 2u) {
         return DARAN_ERR_INVALID_FORMAT;
     } else {
-        result = daran_field_motor(&fields.at[1], &request.motor);
-        count_ok = fields.count >= DARAN_MIN_FIELDS(command) && fields.count <= DARAN_MAX_FIELDS(command);
+        daran_field_t id = daran_field_at(fields, 1);
+        result = daran_field_motor(&id, &request.motor);
+        count_ok = fields->count >= DARAN_MIN_FIELDS(command) && fields->count <= DARAN_MAX_FIELDS(command);
     }
     if (result != DARAN_OK) {
         return result;

@@ -5,6 +5,7 @@ void daran_split_fields(const char *text, size_t len, daran_fields_t *out)
 {
     uint8_t count = 0;
     size_t i = 0;
+    out->base = text;
     for (;;) {
         while (i < len && daran_is_blank(text[i])) {
             i++;
@@ -19,8 +20,8 @@ void daran_split_fields(const char *text, size_t len, daran_fields_t *out)
         if (count == DARAN_FIELDS_MAX) {
             break; /* "too many" is all the caller needs to know */
         }
-        out->at[count].text = text + start;
-        out->at[count].len = (uint16_t)(i - start);
+        out->start[count] = (uint16_t)start;
+        out->len[count] = (uint16_t)(i - start);
         count++;
     }
     out->count = count;

@@ -9,9 +9,11 @@
 #include "daran_drive.h"
 #include "number.h"
 
-/* The most fields any command has (d: word, id and 5 values); one more slot
- * tells "too many" apart from "exactly enough". */
-#define DARAN_FIELDS_MAX 8u
+#if defined(__GNUC__) || defined(__clang__)
+#define DARAN_NOINLINE __attribute__((noinline))
+#else
+#define DARAN_NOINLINE
+#endif
 
 /* A field: a view into the line, never a copy. */
 typedef struct daran_field {
@@ -19,10 +21,12 @@ typedef struct daran_field {
     uint16_t len;
 } daran_field_t;
 
-typedef struct daran_fields {
-    daran_field_t at[DARAN_FIELDS_MAX];
-    uint8_t count; /* fields found, saturating at DARAN_FIELDS_MAX */
-} daran_fields_t;
+/* Field i as a view. */
+static inline daran_field_t daran_field_at(const daran_fields_t *fields, unsigned i)
+{
+    daran_field_t field = {fields->base + fields->start[i], fields->len[i]};
+    return field;
+}
 
 /* One request on its way from the table to the HAL. */
 struct daran_command;
