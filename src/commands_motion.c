@@ -92,8 +92,10 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
                                 daran_move_t *move)
 {
     const motion_shape_t *shape = &shapes[shape_id];
-    float slot[SLOT_COUNT] = {0};
-    slot[SLOT_MODE] = 1.0f;
+    float slot[SLOT_COUNT];
+    for (uint8_t i = 0; i < SLOT_COUNT; i++) {
+        slot[i] = i == SLOT_MODE ? 1.0f : 0.0f; /* the mode of v and c defaults to 1 */
+    }
     move->kind = (daran_move_kind_t)shape->kind;
     move->given = 0;
     for (uint8_t i = 0; i < count; i++) {
