@@ -22,24 +22,25 @@ enum handler {
 #define PATH DARAN_CMD_PATH
 #define READ_PATH (DARAN_CMD_READ | DARAN_CMD_PATH)
 
-/* X(word, min fields, max fields, flags, arg, handler, arguments for `h`).
- * t first: it is the command a host streams at 1 kHz. */
+/* X(word, min fields, max fields, flags, arg, handler, arguments for `h`
+ * after the id: every command but r and w takes the motor id first, and `h`
+ * prints it). t first: it is the command a host streams at 1 kHz. */
 #define SINGLE_MOTION_COMMANDS(X)                                                     \
-    X("t", 3, 5, 0, DARAN_SHAPE_T, HANDLER_MOTION, "id pos [vel] [bw]")              \
-    X("q", 3, 5, 0, DARAN_SHAPE_Q, HANDLER_MOTION, "id pos [vel] [acc]")             \
-    X("p", 3, 5, 0, DARAN_SHAPE_P, HANDLER_MOTION, "id pos [vel_ff] [torque_ff]")    \
-    X("v", 3, 5, 0, DARAN_SHAPE_V, HANDLER_MOTION, "id vel [param] [mode]")          \
-    X("c", 3, 5, 0, DARAN_SHAPE_C, HANDLER_MOTION, "id torque [param] [mode]")       \
-    X("d", 7, 7, 0, DARAN_SHAPE_D, HANDLER_MOTION, "id pdes vdes tff kp kd")
+    X("t", 3, 5, 0, DARAN_SHAPE_T, HANDLER_MOTION, "pos [vel] [bw]")              \
+    X("q", 3, 5, 0, DARAN_SHAPE_Q, HANDLER_MOTION, "pos [vel] [acc]")             \
+    X("p", 3, 5, 0, DARAN_SHAPE_P, HANDLER_MOTION, "pos [vel_ff] [torque_ff]")    \
+    X("v", 3, 5, 0, DARAN_SHAPE_V, HANDLER_MOTION, "vel [param] [mode]")          \
+    X("c", 3, 5, 0, DARAN_SHAPE_C, HANDLER_MOTION, "torque [param] [mode]")       \
+    X("d", 7, 7, 0, DARAN_SHAPE_D, HANDLER_MOTION, "pdes vdes tff kp kd")
 
 #if DARAN_ENABLE_MULTI_MOTOR
 #define MULTI_MOTION_COMMANDS(X)                                       \
-    X("ms", 5, 5, 0, 0, HANDLER_MS, "id p1 p2 p3")                     \
-    X("mt", 3, 3, 0, DARAN_SHAPE_T, HANDLER_START, "id rel")           \
-    X("mq", 3, 3, 0, DARAN_SHAPE_Q, HANDLER_START, "id rel")           \
-    X("mp", 3, 3, 0, DARAN_SHAPE_P, HANDLER_START, "id rel")           \
-    X("mv", 2, 2, 0, DARAN_SHAPE_V, HANDLER_START, "id")               \
-    X("mc", 2, 2, 0, DARAN_SHAPE_C, HANDLER_START, "id")
+    X("ms", 5, 5, 0, 0, HANDLER_MS, "p1 p2 p3")                     \
+    X("mt", 3, 3, 0, DARAN_SHAPE_T, HANDLER_START, "rel")           \
+    X("mq", 3, 3, 0, DARAN_SHAPE_Q, HANDLER_START, "rel")           \
+    X("mp", 3, 3, 0, DARAN_SHAPE_P, HANDLER_START, "rel")           \
+    X("mv", 2, 2, 0, DARAN_SHAPE_V, HANDLER_START, "")               \
+    X("mc", 2, 2, 0, DARAN_SHAPE_C, HANDLER_START, "")
 #else
 #define MULTI_MOTION_COMMANDS(X)
 #endif
@@ -47,25 +48,25 @@ enum handler {
 #define PROPERTY_AND_SYSTEM_COMMANDS(X)                                      \
     X("r", 2, 3, READ_PATH, 0, HANDLER_R, "path [id]")                       \
     X("w", 3, 4, PATH, 0, HANDLER_W, "path value [id]")                      \
-    X("ss", 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, HANDLER_ACTION, "id")         \
-    X("se", 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, HANDLER_ACTION, "id")        \
-    X("sr", 2, 2, 0, DARAN_ACTION_REBOOT, HANDLER_ACTION, "id")              \
-    X("sc", 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, HANDLER_ACTION, "id")        \
-    X("sz", 2, 2, 0, DARAN_ACTION_SET_ZERO, HANDLER_ACTION, "id")            \
-    X("st", 2, 2, 0, DARAN_ACTION_ESTOP, HANDLER_ACTION, "id")
+    X("ss", 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, HANDLER_ACTION, "")         \
+    X("se", 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, HANDLER_ACTION, "")        \
+    X("sr", 2, 2, 0, DARAN_ACTION_REBOOT, HANDLER_ACTION, "")              \
+    X("sc", 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, HANDLER_ACTION, "")        \
+    X("sz", 2, 2, 0, DARAN_ACTION_SET_ZERO, HANDLER_ACTION, "")            \
+    X("st", 2, 2, 0, DARAN_ACTION_ESTOP, HANDLER_ACTION, "")
 
 #if DARAN_ENABLE_HELP
-#define HELP_COMMAND(X) X("h", 2, 2, READ, 0, HANDLER_H, "id")
+#define HELP_COMMAND(X) X("h", 2, 2, READ, 0, HANDLER_H, "")
 #else
 #define HELP_COMMAND(X)
 #endif
 
 #define QUERY_COMMANDS(X)                                                  \
-    X("f", 2, 2, READ, 0, HANDLER_F, "id")                                 \
-    X("g", 2, 2, READ, 0, HANDLER_G, "id")                                 \
-    X("i", 2, 2, READ, 0, HANDLER_I, "id")                                 \
-    X("e", 2, 2, READ, 0, HANDLER_E, "id")                                 \
-    X("u", 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, HANDLER_ACTION, "id")
+    X("f", 2, 2, READ, 0, HANDLER_F, "")                                 \
+    X("g", 2, 2, READ, 0, HANDLER_G, "")                                 \
+    X("i", 2, 2, READ, 0, HANDLER_I, "")                                 \
+    X("e", 2, 2, READ, 0, HANDLER_E, "")                                 \
+    X("u", 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, HANDLER_ACTION, "")
 
 #define DARAN_COMMANDS(X)                                                  \
     SINGLE_MOTION_COMMANDS(X) MULTI_MOTION_COMMANDS(X)                     \
@@ -79,23 +80,31 @@ static const daran_command_t commands[] = {DARAN_COMMANDS(COMMAND_ROW)};
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
 
 #if DARAN_ENABLE_HELP
-/* Every command's help line, each ending in '\0', in table order. */
-#define HELP_LINE(word, min, max, flags, arg, handler, help) word " " help "\0"
+/* Every command's help arguments after the id, each ending in '\0', in table order. */
+#define HELP_LINE(word, min, max, flags, arg, handler, help) help "\0"
 static const char help_text[] = DARAN_COMMANDS(HELP_LINE);
 #undef HELP_LINE
 
 static daran_result_t command_h(daran_drive_t *drive, const daran_request_t *request)
 {
     (void)request;
-    const char *line = help_text;
+    const char *arguments = help_text;
     for (size_t i = 0; i < COMMAND_COUNT; i++) {
+        const daran_command_t *command = &commands[i];
         daran_reply_begin(drive);
-        daran_reply_cstr(drive, line);
-        daran_reply_end(drive);
-        while (*line != '\0') {
-            line++;
+        daran_reply_text(drive, command->word, command->word[1] != '\0' ? 2u : 1u);
+        if ((command->flags & DARAN_CMD_PATH) == 0u) {
+            daran_reply_text(drive, " id", 3);
         }
-        line++;
+        if (*arguments != '\0') {
+            daran_reply_space(drive);
+            daran_reply_cstr(drive, arguments);
+        }
+        daran_reply_end(drive);
+        while (*arguments != '\0') {
+            arguments++;
+        }
+        arguments++;
     }
     return DARAN_OK;
 }
