@@ -6,8 +6,9 @@
 #      package's version file answers SameMajorVersion;
 #   3. an install built with a user options header (DARAN_CONFIG_HEADER) still
 #      agrees with its consumers;
-#   4. three daran_config.h configurations each build the core and pass
-#      tests/config, and impossible options stop the compiler at #error.
+#   4. four daran_config.h configurations (defaults, two asked for by the
+#      issue, the upper limits) each build the core and pass tests/config, and
+#      impossible options stop the compiler at #error.
 # Release flags, Ninja, no sanitizers; budget 2 minutes. Exits non-zero on the
 # first failure, after printing that step's log.
 set -euo pipefail
@@ -140,6 +141,11 @@ step "config (b): DARAN_LINE_MAX=64, DARAN_REPLY_CRLF=1, DARAN_ENABLE_HELP=0" \
 step "config (c): user header: no multi-motor, 32-byte ring, 256-byte lines" \
   config_suite c -DDARAN_CONFIG_HEADER="$repo/tests/config/config_c.h" \
   "-DDARAN_TEST_EXPECT=line_max=256;ring=32;multi=0;help=1;crlf=0"
+# The largest values daran_config.h allows: 16-bit ring and line indices at their edge.
+step "config (d): upper limits: 1024-byte lines and replies, 32768-byte ring, ids to 255" \
+  config_suite d \
+  "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=1024;DARAN_RX_RING_SIZE=32768;DARAN_REPLY_MAX=1024;DARAN_MOTOR_ID_MAX=255" \
+  "-DDARAN_TEST_EXPECT=line_max=1024;ring=32768;reply_max=1024;motor_id_max=255"
 
 printf '%s\n' "${summary[@]}"
 echo "50-package: ${#summary[@]} steps passed in $((SECONDS - start)) s"
