@@ -514,11 +514,39 @@ static size_t put_text(char *buf, const char *text)
     return n;
 }
 
+/* The decimal digits of hi * 2^32 + lo, written backwards ending at end; returns
+ * their count. Above 2^32 each digit is a long division by 10 of the 32-bit high
+ * word and two 16-bit chunks: 32-bit hardware division only, never a 64-bit
+ * division (a library call on Cortex-M). */
+static size_t put_digits(char *end, uint32_t hi, uint32_t lo)
+{
+    size_t n = 0;
+    do {
+        uint32_t r;
+        if (hi) {
+            uint32_t t, up;
+            r = hi % 10u;
+            hi /= 10u;
+            t = (r << 16) | (lo >> 16);
+            up = t / 10u;
+            t = ((t % 10u) << 16) | (lo & 0xFFFFu);
+            lo = (up << 16) | (t / 10u);
+            r = t % 10u;
+        } else {
+            r = lo % 10u;
+            lo /= 10u;
+        }
+        end[-(ptrdiff_t)++n] = (char)('0' + r);
+    } while (hi | lo);
+    return n;
+}
+
 size_t daran_format_f32(float value, char *buf)
 {
     uint32_t bits, s;
     char d[10];
-    int32_t k, big_k, nd = 0, i;
+    const char *dig;
+    int32_t k, nd, pt, j, last, sci;
     size_t n = 0;
     memcpy(&bits, &value, sizeof bits);
     if ((bits & 0x7FFFFFFFu) > DARAN_F32_INF) {
@@ -540,79 +568,36 @@ size_t daran_format_f32(float value, char *buf)
         s /= 10u;
         k++;
     }
-    for (; s; s /= 10u) {
-        d[nd++] = (char)('0' + s % 10u); /* least significant first */
-    }
-    big_k = k + nd - 1; /* value = d.ddd * 10^big_k */
-    if (big_k >= -5 && big_k <= 8) {
-        if (big_k < 0) {
-            buf[n++] = '0';
+    nd = (int32_t)put_digits(d + sizeof d, 0, s);
+    dig = d + sizeof d - nd;
+    k += nd - 1; /* value = d.ddd * 10^k */
+    sci = k < -5 || k > 8;
+    /* One pass over the digit positions j: the point goes before position pt,
+     * positions outside 0..nd-1 are zeros ("0.000d", "d000", "d.0e+XX"). */
+    pt = sci ? 1 : k + 1;
+    last = nd > pt + sci ? nd : pt + sci;
+    for (j = pt > 0 ? 0 : pt - 1; j < last; j++) {
+        if (j == pt) {
             buf[n++] = '.';
-            for (i = -1; i > big_k; i--) {
-                buf[n++] = '0';
-            }
         }
-        for (i = nd - 1; i >= 0; i--) {
-            if (big_k >= 0 && i == nd - 2 - big_k) {
-                buf[n++] = '.';
-            }
-            buf[n++] = d[i];
-        }
-        for (i = 0; i < k; i++) {
-            buf[n++] = '0';
-        }
-        return n;
+        buf[n++] = j >= 0 && j < nd ? dig[j] : '0';
     }
-    buf[n++] = d[nd - 1];
-    buf[n++] = '.';
-    if (nd == 1) {
-        buf[n++] = '0';
+    if (sci) {
+        buf[n++] = 'e';
+        buf[n++] = k < 0 ? '-' : '+';
+        k = k < 0 ? -k : k; /* float32: at most 45, two digits */
+        buf[n++] = (char)('0' + k / 10);
+        buf[n++] = (char)('0' + k % 10);
     }
-    for (i = nd - 2; i >= 0; i--) {
-        buf[n++] = d[i];
-    }
-    buf[n++] = 'e';
-    buf[n++] = big_k < 0 ? '-' : '+';
-    big_k = big_k < 0 ? -big_k : big_k; /* float32: at most 45, two digits */
-    buf[n++] = (char)('0' + big_k / 10);
-    buf[n++] = (char)('0' + big_k % 10);
     return n;
-}
-
-/* v / 10 without a 64-bit division (a library call on Cortex-M). */
-static uint64_t div10_u64(uint64_t v)
-{
-    uint64_t q = (v >> 1) + (v >> 2), r;
-    q += q >> 4;
-    q += q >> 8;
-    q += q >> 16;
-    q += q >> 32;
-    q >>= 3; /* q <= v / 10, short by a few at most */
-    r = v - ((q << 3) + (q << 1));
-    while (r > 9u) {
-        q++;
-        r -= 10u;
-    }
-    return q;
 }
 
 size_t daran_format_u64(uint64_t value, char *buf)
 {
     char d[DARAN_U64_TEXT_MAX];
-    size_t nd = 0, n;
-    uint32_t small;
-    while (value > 0xFFFFFFFFu) {
-        uint64_t q = div10_u64(value);
-        d[nd++] = (char)('0' + (uint32_t)(value - ((q << 3) + (q << 1))));
-        value = q;
-    }
-    small = (uint32_t)value;
-    do {
-        d[nd++] = (char)('0' + small % 10u);
-        small /= 10u;
-    } while (small);
+    size_t nd = put_digits(d + sizeof d, (uint32_t)(value >> 32), (uint32_t)value), n;
     for (n = 0; n < nd; n++) {
-        buf[n] = d[nd - 1 - n];
+        buf[n] = d[sizeof d - nd + n];
     }
     return nd;
 }
