@@ -61,37 +61,6 @@ static bool split_axis_path(const daran_field_t *path, daran_field_t *number,
     return false;
 }
 
-/* Step 4 and 5 of the check order for r/w: the id from the path or the
- * trailing field (D9), then the field count, then the property. */
-static daran_result_t address_property(const daran_command_t *command,
-                                       const daran_fields_t *fields, daran_request_t *request,
-                                       bool *count_ok, daran_scope_t *scope, daran_field_t *name)
-{
-    if (fields->count < 2u) {
-        return DARAN_ERR_INVALID_FORMAT;
-    }
-    daran_field_t number;
-    daran_field_t path = daran_field_at(fields, 1);
-    if (split_axis_path(&path, &number, name)) {
-        *scope = DARAN_SCOPE_AXIS;
-        *count_ok = fields->count == DARAN_MIN_FIELDS(command);
-        return daran_field_motor(&number, &request->motor);
-    }
-    *scope = DARAN_SCOPE_SYSTEM;
-    *name = path;
-    if (fields->count == DARAN_MIN_FIELDS(command)) {
-        *count_ok = true;
-        request->motor = 0;
-        return DARAN_OK;
-    }
-    if (fields->count == DARAN_MAX_FIELDS(command)) {
-        *count_ok = true;
-        daran_field_t id = daran_field_at(fields, DARAN_MAX_FIELDS(command) - 1u);
-        return daran_field_motor(&id, &request->motor);
-    }
-    return DARAN_ERR_INVALID_FORMAT;
-}
-
 static daran_result_t own_id(daran_drive_t *drive, uint32_t *id)
 {
     daran_value_t value;
@@ -100,11 +69,13 @@ static daran_result_t own_id(daran_drive_t *drive, uint32_t *id)
     return result;
 }
 
+/* Steps 3 to 5 of the check order (spec section 8), then the handler. */
 static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
 {
     daran_fields_t *fields = &drive->fields;
     daran_split_fields(line->text, line->star_at, fields);
-    if (fields->count == 0u) {
+    uint8_t count = fields->count;
+    if (count == 0u) {
         /* Blank lines are ignored; a checksum with no command is not (D5). */
         return drive->reply_checksum ? DARAN_ERR_UNKNOWN_COMMAND : DARAN_OK;
     }
@@ -113,33 +84,46 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     if (command == NULL) {
         return DARAN_ERR_UNKNOWN_COMMAND;
     }
-
-    daran_request_t request = {command, fields, 0, DARAN_PROP_COUNT};
-    daran_result_t result;
-    bool count_ok;
-    daran_scope_t scope = DARAN_SCOPE_SYSTEM;
-    daran_field_t name = {NULL, 0};
-    if ((command->flags & DARAN_CMD_PATH) != 0u) {
-        result = address_property(command, fields, &request, &count_ok, &scope, &name);
-    } else if (fields->count < 2u) {
+    if (count < 2u) {
         return DARAN_ERR_INVALID_FORMAT;
-    } else {
-        daran_field_t id = daran_field_at(fields, 1);
-        result = daran_field_motor(&id, &request.motor);
-        count_ok = fields->count >= DARAN_MIN_FIELDS(command) && fields->count <= DARAN_MAX_FIELDS(command);
     }
-    if (result != DARAN_OK) {
+
+    /* Where the id is: field 1; for r/w the N of `axisN.`, or the last field
+     * of a system path, absent meaning 0 (D8, D9). The property is looked up
+     * here but reported after the id and the field count, in spec order. */
+    daran_request_t request = {command, fields, 0, DARAN_PROP_COUNT};
+    bool count_ok = count >= DARAN_MIN_FIELDS(command) && count <= DARAN_MAX_FIELDS(command);
+    daran_result_t property = DARAN_OK;
+    daran_field_t id = daran_field_at(fields, 1);
+    if ((command->flags & DARAN_CMD_PATH) != 0u) {
+        daran_field_t path = id;
+        daran_field_t name = path;
+        daran_scope_t scope = DARAN_SCOPE_SYSTEM;
+        if (split_axis_path(&path, &id, &name)) {
+            scope = DARAN_SCOPE_AXIS;
+            count_ok = count == DARAN_MIN_FIELDS(command);
+        } else if (count == DARAN_MAX_FIELDS(command)) {
+            id = daran_field_at(fields, count - 1u);
+        } else if (count == DARAN_MIN_FIELDS(command)) {
+            id.text = NULL; /* no id: every drive */
+        } else {
+            return DARAN_ERR_INVALID_FORMAT;
+        }
+        property = daran_find_property(scope, name.text, name.len, &request.prop);
+    }
+    daran_result_t result;
+    if (id.text != NULL && (result = daran_field_motor(&id, &request.motor)) != DARAN_OK) {
         return result;
     }
 
-    uint32_t id;
-    result = own_id(drive, &id);
+    uint32_t own;
+    result = own_id(drive, &own);
     if (result != DARAN_OK) {
         return result;
     }
     /* Another drive's line, or a broadcast that is not a read, goes to the
      * gateway too (D10); only the broadcast also runs here. */
-    bool elsewhere = request.motor != 0u && request.motor != id;
+    bool elsewhere = request.motor != 0u && request.motor != own;
     bool broadcast = request.motor == 0u && (command->flags & DARAN_CMD_READ) == 0u;
     if ((elsewhere || broadcast) && drive->forward != NULL) {
         drive->forward(drive->forward_ctx, request.motor, line->text, line->len);
@@ -147,15 +131,11 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     if (elsewhere) {
         return DARAN_OK;
     }
-
     if (!count_ok) {
         return DARAN_ERR_INVALID_FORMAT;
     }
-    if ((command->flags & DARAN_CMD_PATH) != 0u) {
-        result = daran_find_property(scope, name.text, name.len, &request.prop);
-        if (result != DARAN_OK) {
-            return result;
-        }
+    if (property != DARAN_OK) {
+        return property;
     }
     return daran_run_command(drive, &request);
 }
