@@ -43,15 +43,13 @@ static const uint8_t daran_pow10_correction[28] = {
 #define DARAN_POW10_MIN (-64)
 #define DARAN_POW10_STRIDE 16u
 
+/* What the scan found: the digits themselves are read again from the text. */
 typedef struct {
     const char *mant; /* first mantissa character */
     size_t int_len;   /* digits before the point */
     size_t total;     /* digits of the mantissa, point excluded */
     size_t z;         /* index of the first non-zero digit */
     size_t end;       /* index after the last non-zero digit; 0: all zero */
-    size_t w_end;     /* index after the last non-zero digit in the window */
-    uint64_t window;  /* the 19 digits from z (or fewer, if the text ends) */
-    uint64_t w;       /* digits [z, w_end): the window without trailing zeros */
     int32_t exp10;    /* explicit exponent, saturated */
     int negative;
 } number_scan_t;
@@ -134,66 +132,42 @@ uint64_t daran_pow10_hi(int32_t q)
            (((unsigned)daran_pow10_correction[i / 4u] >> (2u * (i % 4u))) & 3u);
 }
 
-/* A run of digits from t[i]: counts them and keeps the significant window.
- * Works on locals: stores through s could alias the text and cost reloads. */
-static size_t scan_digits(const char *t, size_t i, size_t len, number_scan_t *s)
+/* The grammar [+-]?(digits[.digits*]|.digits)([eE][+-]?digits)?, all of it, in
+ * one pass over the text that only counts: the counts stay in registers (stores
+ * through s could alias the text and cost reloads). */
+static int number_scan(const char *t, size_t len, number_scan_t *s)
 {
-    size_t idx = s->total, z = s->z, end = s->end, w_end = s->w_end;
-    uint64_t window = s->window, w = s->w;
-    for (; i < len; i++, idx++) {
+    size_t i = 0, idx = 0, z = 0, end = 0, int_len = (size_t)-1, e_start;
+    int32_t e = 0;
+    int eneg = 0;
+    s->negative = 0;
+    if (len && (t[0] == '+' || t[0] == '-')) {
+        s->negative = t[0] == '-';
+        i = 1;
+    }
+    s->mant = t + i;
+    for (; i < len; i++) {
         uint32_t d = (uint32_t)(unsigned char)t[i] - (uint32_t)'0';
         if (d > 9u) {
-            break;
-        }
-        if (!end) {
-            if (!d) {
-                continue; /* a leading zero */
+            if (t[i] != '.' || int_len != (size_t)-1) {
+                break;
             }
-            z = idx;
+            int_len = idx; /* the first point */
+            continue;
         }
-        if (idx - z < 19u) {
-            window = window * 10u + d;
-            if (d) {
-                w = window;
-                w_end = idx + 1u;
-            }
-        }
+        idx++; /* digit idx - 1 */
         if (d) {
-            end = idx + 1u;
+            if (!end) {
+                z = idx - 1u;
+            }
+            end = idx;
         }
     }
+    s->int_len = int_len == (size_t)-1 ? idx : int_len;
     s->total = idx;
     s->z = z;
     s->end = end;
-    s->w_end = w_end;
-    s->window = window;
-    s->w = w;
-    return i;
-}
-
-/* The grammar [+-]?(digits[.digits*]|.digits)([eE][+-]?digits)?, all of it. */
-static int number_scan(const char *t, size_t len, number_scan_t *s)
-{
-    size_t i = 0;
-    int32_t e = 0;
-    int eneg = 0;
-    /* Field by field: a memset is a library call (and ~200 instructions on a
-     * Cortex-M4) for a struct of a few words, on every number of every line. */
-    s->int_len = s->total = s->z = s->end = s->w_end = 0;
-    s->window = s->w = 0;
-    s->exp10 = 0;
-    s->negative = 0;
-    if (i < len && (t[i] == '+' || t[i] == '-')) {
-        s->negative = t[i] == '-';
-        i++;
-    }
-    s->mant = t + i;
-    i = scan_digits(t, i, len, s);
-    s->int_len = s->total;
-    if (i < len && t[i] == '.') {
-        i = scan_digits(t, i + 1, len, s);
-    }
-    if (s->total == 0) {
+    if (idx == 0) {
         return 0;
     }
     if (i < len && (t[i] == 'e' || t[i] == 'E')) {
@@ -202,11 +176,11 @@ static int number_scan(const char *t, size_t len, number_scan_t *s)
             eneg = t[i] == '-';
             i++;
         }
-        if (i >= len || !is_digit(t[i])) {
-            return 0;
-        }
-        for (; i < len && is_digit(t[i]); i++) {
+        for (e_start = i; i < len && is_digit(t[i]); i++) {
             e = e < DARAN_NUM_CAP / 10 ? e * 10 + (t[i] - '0') : (int32_t)DARAN_NUM_CAP;
+        }
+        if (i == e_start) {
+            return 0;
         }
     }
     s->exp10 = eneg ? -e : e;
@@ -402,11 +376,18 @@ daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
         return DARAN_ERR_INVALID_VALUE;
     }
     if (s.end) {
-        /* Truncated: keep all 19 window digits so w >= 10^18 (see decimal_to_bits). */
-        int truncated = s.end > s.w_end;
-        uint64_t w = truncated ? s.window : s.w;
-        size_t w_end = truncated ? s.z + 19u : s.w_end;
-        bits = decimal_to_bits(&s, w, diff_saturated(s.int_len, w_end) + s.exp10, truncated);
+        /* Up to 19 significant digits; truncated: a non-zero digit follows them,
+         * and then all 19 are kept, so w >= 10^18 (see decimal_to_bits). */
+        size_t n = s.end - s.z, i;
+        int truncated = n > 19u;
+        uint64_t w = 0;
+        if (truncated) {
+            n = 19u;
+        }
+        for (i = s.z; i < s.z + n; i++) {
+            w = w * 10u + digit_at(&s, i);
+        }
+        bits = decimal_to_bits(&s, w, diff_saturated(s.int_len, s.z + n) + s.exp10, truncated);
         if (bits >= DARAN_F32_INF) {
             return DARAN_ERR_OUT_OF_RANGE;
         }
@@ -420,7 +401,8 @@ daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out)
 {
     number_scan_t s;
     uint64_t v = 0;
-    int32_t e, i;
+    int32_t e;
+    size_t i;
     if ((text == NULL && len != 0) || out == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
@@ -428,29 +410,26 @@ daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out)
         return DARAN_ERR_INVALID_VALUE;
     }
     if (s.end) {
-        /* value = digits[z, end) * 10^e */
+        /* value = digits[z, end) * 10^e: its digits, then e zeros */
         e = diff_saturated(s.int_len, s.end) + s.exp10;
         if (e < 0) {
             return DARAN_ERR_INVALID_VALUE; /* a non-zero digit after the point */
         }
-        if (s.negative || s.end - s.z > 20u || (int32_t)(s.end - s.z) + e > 20) {
+        if (s.negative) {
             return DARAN_ERR_OUT_OF_RANGE;
         }
-        if (s.end == s.w_end) {
-            v = s.w;
-        } else { /* 20 digits, e == 0: the last one may overflow */
-            v = s.window;
-            if (v > UINT64_C(1844674407370955161) ||
-                (v == UINT64_C(1844674407370955161) && digit_at(&s, s.end - 1u) > 5u)) {
+        for (i = s.z;; i++) {
+            uint32_t d = 0;
+            if (i < s.end) {
+                d = digit_at(&s, i);
+            } else if (e-- == 0) {
+                break;
+            }
+            /* v * 10 + d > UINT64_MAX; a first digit is non-zero: at most 20 rounds */
+            if (v > UINT64_MAX / 10u || (v == UINT64_MAX / 10u && d > UINT64_MAX % 10u)) {
                 return DARAN_ERR_OUT_OF_RANGE;
             }
-            v = v * 10u + digit_at(&s, s.end - 1u);
-        }
-        for (i = 0; i < e; i++) {
-            if (v > UINT64_C(1844674407370955161)) {
-                return DARAN_ERR_OUT_OF_RANGE;
-            }
-            v *= 10u;
+            v = v * 10u + d;
         }
     }
     *out = v;
