@@ -62,13 +62,7 @@ void daran_reply_end(daran_drive_t *drive)
         uint8_t sum = (uint8_t)(daran_xor(out, len) ^ (uint8_t)' ');
         out[len++] = ' ';
         out[len++] = '*';
-        if (sum >= 100u) {
-            out[len++] = (char)('0' + sum / 100u);
-        }
-        if (sum >= 10u) {
-            out[len++] = (char)('0' + (sum / 10u) % 10u);
-        }
-        out[len++] = (char)('0' + sum % 10u);
+        len += daran_format_u64(sum, out + len); /* writes only its digits: 3 at most, inside TAIL_ROOM */
     }
     for (size_t i = 0; i < sizeof LINE_END - 1u; i++) {
         out[len++] = LINE_END[i];
