@@ -96,7 +96,7 @@ daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t
     while (low < high) {
         size_t mid = low + (high - low) / 2u;
         if (property_key[mid] == key) {
-            *prop = (daran_prop_t)property_of_key[mid];
+            *prop = (daran_prop_t)mid; /* keys are in the list's order */
             return DARAN_OK;
         }
         if (property_key[mid] < key) {
