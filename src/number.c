@@ -26,22 +26,23 @@
 #define DARAN_BIG_LIMBS 14
 
 /* The leading 64 bits of 10^q, q = -64..45, truncated, are rebuilt from every
- * 16th of them (the anchors) and a 2-bit correction per entry: 84 bytes instead
- * of 880 (bench/number/gen_pow10_table.py makes both and proves the rebuild
- * exact; tests/number checks it in C against all 110 exact values). */
-static const uint64_t daran_pow10_anchor[7] = {
-    UINT64_C(0xA87FEA27A539E9A5), UINT64_C(0xBB127C53B17EC159), UINT64_C(0xCFB11EAD453994BA),
-    UINT64_C(0xE69594BEC44DE15B), UINT64_C(0x8000000000000000), UINT64_C(0x8E1BC9BF04000000),
-    UINT64_C(0x9DC5ADA82B70B59D),
+ * 14th of them rounded up (the anchors) times a power of 5 below 2^32, and a
+ * 2-bit correction per entry: 92 bytes instead of 880
+ * (bench/number/gen_pow10_table.py makes both and proves the rebuild exact;
+ * tests/number checks it in C against all 110 exact values). */
+static const uint64_t daran_pow10_anchor[8] = {
+    UINT64_C(0xA87FEA27A539E9A6), UINT64_C(0xEF73D256A5C0F77D), UINT64_C(0xAA242499697392D3),
+    UINT64_C(0xF1C90080BAF72CB2), UINT64_C(0xABCC77118461CEFD), UINT64_C(0xF424000000000000),
+    UINT64_C(0xAD78EBC5AC620000), UINT64_C(0xF684DF56C3E01BC7),
 };
 static const uint8_t daran_pow10_correction[28] = {
-    0x10, 0x01, 0x00, 0x00, 0x40, 0x00, 0x01, 0x00, 0x40, 0x40, 0x10, 0x54,
-    0x44, 0x00, 0x44, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
-    0x54, 0x99, 0x56, 0x04,
+    0x45, 0x55, 0x56, 0x55, 0x14, 0x00, 0x00, 0x41, 0x00, 0x00, 0x50, 0x01,
+    0x00, 0x15, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+    0x10, 0x00, 0x10, 0x05,
 };
 
 #define DARAN_POW10_MIN (-64)
-#define DARAN_POW10_STRIDE 16u
+#define DARAN_POW10_STRIDE 14u
 
 /* What the scan found: the digits themselves are read again from the text. */
 typedef struct {
@@ -110,25 +111,22 @@ static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
     return p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
 }
 
-/* Leading 64 bits of 10^q (q = -64..45), truncated: the top 64 bits of the exact
- * 128-bit product anchor * 10^r, then the stored correction (0..3). */
+/* Leading 64 bits of 10^q (q = -64..45), truncated: the top 64 bits of the
+ * exact 96-bit product anchor * 5^r (10^r = 5^r * 2^r: the 2^r does not change
+ * leading bits), less the stored correction (0..3). */
 uint64_t daran_pow10_hi(int32_t q)
 {
-    uint32_t i = (uint32_t)(q - DARAN_POW10_MIN);
-    uint64_t anchor = daran_pow10_anchor[i / DARAN_POW10_STRIDE];
-    uint64_t scale = 1, hi, lo;
+    uint32_t i = (uint32_t)(q - DARAN_POW10_MIN), scale = 1, r;
+    uint64_t anchor = daran_pow10_anchor[i / DARAN_POW10_STRIDE], lo, hi;
     unsigned lz;
-    uint32_t r;
     for (r = i % DARAN_POW10_STRIDE; r > 0u; r--) {
-        scale *= 10u;
+        scale *= 5u;
     }
-    if (scale == 1u) {
-        return anchor;
-    }
-    /* 10 <= scale < 10^16, so 5 <= hi < 2^50: both shifts below stay in 14..59. */
-    hi = mul_64x64(anchor, scale, &lo);
+    /* anchor * scale = hi * 2^32 + (lo mod 2^32); hi >= 2^31, so lz <= 32 */
+    lo = (anchor & 0xFFFFFFFFu) * scale;
+    hi = (anchor >> 32) * scale + (lo >> 32);
     lz = clz64(hi);
-    return ((hi << lz) | (lo >> (64u - lz))) +
+    return ((hi << lz) | ((lo & 0xFFFFFFFFu) << lz >> 32)) -
            (((unsigned)daran_pow10_correction[i / 4u] >> (2u * (i % 4u))) & 3u);
 }
 
@@ -330,15 +328,19 @@ static DARAN_NOINLINE uint32_t big_decide(const number_scan_t *s, uint32_t lo)
  * truncated: a later digit is non-zero, and then w has all 19 (w >= 10^18). */
 static uint32_t decimal_to_bits(const number_scan_t *s, uint64_t w, int32_t q, int truncated)
 {
-    static const float pow10f[11] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
     uint64_t hi, lo;
     uint32_t bits, d;
     unsigned lz;
     int32_t e;
     if (DARAN_NUM_FAST_PATH && !truncated && w <= (UINT64_C(1) << 24) && q >= -10 && q <= 10) {
-        /* Both operands exact in float32: one IEEE operation rounds correctly. */
-        float f = (float)(uint32_t)w;
-        f = q < 0 ? f / pow10f[-q] : f * pow10f[q];
+        /* Both operands exact in float32 (10^10 = 2^10 * 9765625, and every
+         * product on the way is exact too): one IEEE operation rounds correctly. */
+        float f = (float)(uint32_t)w, p = 1.0f;
+        int32_t n;
+        for (n = q < 0 ? -q : q; n > 0; n--) {
+            p *= 10.0f;
+        }
+        f = q < 0 ? f / p : f * p;
         memcpy(&bits, &f, sizeof bits);
         return bits;
     }
@@ -528,15 +530,12 @@ size_t daran_format_f32(float value, char *buf)
     int32_t k, nd, pt, j, last, sci;
     size_t n = 0;
     memcpy(&bits, &value, sizeof bits);
-    if ((bits & 0x7FFFFFFFu) > DARAN_F32_INF) {
-        return put_text(buf, "nan");
-    }
-    if (bits >> 31) {
-        buf[n++] = '-';
+    if (bits >> 31 && bits << 1 <= DARAN_F32_INF << 1) {
+        buf[n++] = '-'; /* not for a NaN */
     }
     bits &= 0x7FFFFFFFu;
-    if (bits == DARAN_F32_INF) {
-        return n + put_text(buf + n, "inf");
+    if (bits >= DARAN_F32_INF) {
+        return n + put_text(buf + n, bits > DARAN_F32_INF ? "nan" : "inf");
     }
     if (bits == 0) {
         buf[n++] = '0';

@@ -4,10 +4,13 @@
 Entry q (q = -64..45) is floor(10^q * 2^(63 - floor(log2(10^q)))): the 64 leading
 bits of 10^q, truncated, with bit 63 set. Parsing uses q = -64..38, printing uses
 10^-k for k = -45..31. number.c does not store all 110 entries: it stores every
-16th (the anchors) and rebuilds entry q as the top 64 bits of the exact product
-anchor * 10^r plus a 2-bit correction stored per entry, which makes every rebuilt
-entry equal to the exact one (checked here, and in C by tests/number/test_number.c
-against the full list this script writes with --expected).
+14th, rounded up (the anchors), and rebuilds entry q as the top 64 bits of the
+exact 96-bit product anchor * 5^r (5^r < 2^32 for r <= 13; the factor 2^r of
+10^r does not change leading bits) minus a 2-bit correction stored per entry,
+which makes every rebuilt entry equal to the exact one (checked here, and in C
+by tests/number/test_pow10.c against the full list this script writes with
+--expected). Anchors rounded up keep every product at or above the exact value,
+so none falls just under a power of two (a truncated 10^-8 times 5^8 would).
 Also checks the integer log formulas number.c uses.
 Run: python3 bench/number/gen_pow10_table.py [--expected]"""
 import sys
@@ -52,12 +55,22 @@ def check_log_formulas():
         assert (q * 1262611 - 524031) >> 22 == floor_log10(Fraction(3, 4) * two_q), q
 
 
-STRIDE = 16
+STRIDE = 14
+
+
+def anchor_entry(q):
+    """10^q's 64 leading bits rounded up."""
+    x = Fraction(10) ** q
+    scaled = x * Fraction(2) ** (63 - floor_log2(x))
+    t = -((-scaled.numerator) // scaled.denominator)
+    assert 2 ** 63 <= t < 2 ** 64
+    return t
 
 
 def rebuilt(anchor, r):
-    """What number.c computes before its correction: the top 64 bits of anchor * 10^r."""
-    p = anchor * 10 ** r
+    """What number.c computes before its correction: the top 64 bits of anchor * 5^r."""
+    assert 5 ** r < 2 ** 32
+    p = anchor * 5 ** r
     return p >> (p.bit_length() - 64)
 
 
@@ -72,10 +85,10 @@ def main():
             print("    " + ", ".join("UINT64_C(0x%016X)" % v for v in vals[i:i + 3]) + ",")
         print("};")
         return
-    anchors = vals[::STRIDE]
+    anchors = [anchor_entry(q) for q in range(LO, HI + 1, STRIDE)]
     corrections = []
     for i, v in enumerate(vals):
-        c = v - rebuilt(anchors[i // STRIDE], i % STRIDE)
+        c = rebuilt(anchors[i // STRIDE], i % STRIDE) - v
         assert 0 <= c <= 3, (i, c)
         corrections.append(c)
     packed = []
