@@ -116,18 +116,24 @@ static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
  * leading bits), less the stored correction (0..3). */
 uint64_t daran_pow10_hi(int32_t q)
 {
-    uint32_t i = (uint32_t)(q - DARAN_POW10_MIN), scale = 1, r;
-    uint64_t anchor = daran_pow10_anchor[i / DARAN_POW10_STRIDE], lo, hi;
-    unsigned lz;
-    for (r = i % DARAN_POW10_STRIDE; r > 0u; r--) {
-        scale *= 5u;
+    uint32_t i = (uint32_t)(q - DARAN_POW10_MIN), scale = 1, r = i % DARAN_POW10_STRIDE, h1, h0, lz;
+    uint64_t v = daran_pow10_anchor[i / DARAN_POW10_STRIDE], lo, hi;
+    if (r) {
+        for (; r > 0u; r--) {
+            scale *= 5u;
+        }
+        /* v * scale = hi * 2^32 + (lo mod 2^32), 2^32 <= hi < 2^64: shift its
+         * top 64 bits into place word by word (0 <= lz < 32). */
+        lo = (v & 0xFFFFFFFFu) * scale;
+        hi = (v >> 32) * scale + (lo >> 32);
+        h1 = (uint32_t)(hi >> 32);
+        h0 = (uint32_t)hi;
+        lz = (uint32_t)clz64(hi);
+        h1 = (h1 << lz) | (h0 >> 1 >> (31u - lz));
+        h0 = (h0 << lz) | ((uint32_t)lo >> 1 >> (31u - lz));
+        v = (uint64_t)h1 << 32 | h0;
     }
-    /* anchor * scale = hi * 2^32 + (lo mod 2^32); hi >= 2^31, so lz <= 32 */
-    lo = (anchor & 0xFFFFFFFFu) * scale;
-    hi = (anchor >> 32) * scale + (lo >> 32);
-    lz = clz64(hi);
-    return ((hi << lz) | ((lo & 0xFFFFFFFFu) << lz >> 32)) -
-           (((unsigned)daran_pow10_correction[i / 4u] >> (2u * (i % 4u))) & 3u);
+    return v - (((unsigned)daran_pow10_correction[i / 4u] >> (2u * (i % 4u))) & 3u);
 }
 
 /* The grammar [+-]?(digits[.digits*]|.digits)([eE][+-]?digits)?, all of it, in
