@@ -4,7 +4,7 @@
 #define DARAN_PROPERTY_INDEX_H
 
 #define DARAN_SEGMENT_BITS 6u
-#define DARAN_MAX_SEGMENTS 4u
+#define DARAN_MAX_SEGMENTS 3u
 #define DARAN_SEGMENT_COUNT 54u
 #define DARAN_KEY_COUNT 53u
 
@@ -63,62 +63,63 @@ static const uint16_t segment_end[DARAN_SEGMENT_COUNT] = {
     666, 679, 691, 707,
 };
 
-/* Path keys, ascending: scope bit, then 6 bits per segment number. Key i
+/* Path keys, ascending, 3 bytes each, most significant first: scope bit,
+ * then 6 bits per segment number. Key i
  * is the path of property i (the list is sorted the same way). */
-static const uint32_t property_key[DARAN_KEY_COUNT] = {
-    0x00c7080u, /* CAN_BAUD_RATE */
-    0x01ee000u, /* UART_BAUDRATE */
-    0x0500000u, /* FW_VERSION */
-    0x0540000u, /* HW_VERSION */
-    0x0580000u, /* IBUS */
-    0x08c0000u, /* SERIAL_NUMBER */
-    0x0bc0000u, /* VBUS_VOLTAGE */
-    0x11c4000u, /* CAN_NODE_ID */
-    0x11cf000u, /* ENABLE_WATCHDOG */
-    0x11d2340u, /* ENABLE_CIRCULAR_SETPOINT_LIMIT */
-    0x11f6000u, /* WATCHDOG_TIMEOUT */
-    0x1207380u, /* ENABLE_CURRENT_MODE_VEL_LIMIT */
-    0x12075c0u, /* INPUT_FILTER_BANDWIDTH */
-    0x1207800u, /* POS_GAIN */
-    0x1207c40u, /* VEL_GAIN */
-    0x1207c80u, /* VEL_INTEGRATOR_GAIN */
-    0x1207cc0u, /* CONTROLLER_VEL_LIMIT */
-    0x122d000u, /* TRAJECTORY_DONE */
-    0x1300000u, /* CURRENT_STATE */
-    0x1440000u, /* AXIS_ERROR */
-    0x14c7400u, /* FET_THERMISTOR_ENABLED */
-    0x14c7940u, /* FET_TEMP_LIMIT_LOWER */
-    0x14c7980u, /* FET_TEMP_LIMIT_UPPER */
-    0x14d1000u, /* FET_THERMISTOR_ERROR */
-    0x14e7000u, /* FET_TEMPERATURE */
-    0x1707280u, /* CURRENT_CONTROL_BANDWIDTH */
-    0x17072c0u, /* CURRENT_LIM */
-    0x1707a80u, /* MOTOR_TORQUE_LIM */
-    0x1709040u, /* IQ_MEASURED */
-    0x1747400u, /* MOTOR_THERMISTOR_ENABLED */
-    0x1747940u, /* MOTOR_TEMP_LIMIT_LOWER */
-    0x1747980u, /* MOTOR_TEMP_LIMIT_UPPER */
-    0x1751000u, /* MOTOR_THERMISTOR_ERROR */
-    0x1767000u, /* MOTOR_TEMPERATURE */
-    0x1785000u, /* CIRCULAR_SETPOINT_MAX */
-    0x1786000u, /* CIRCULAR_SETPOINT_MIN */
-    0x1798000u, /* INPUT_POS */
-    0x1799000u, /* INPUT_TORQUE */
-    0x179a000u, /* INPUT_VEL */
-    0x179b000u, /* LOAD_INERTIA */
-    0x179f000u, /* POS_ESTIMATE */
-    0x17a1000u, /* POS_SETPOINT */
-    0x17a4000u, /* STEPS_PER_TURN */
-    0x17a8000u, /* TORQUE_CONSTANT */
-    0x17a9000u, /* TORQUE_ESTIMATE */
-    0x17aa000u, /* SHAFT_TORQUE_LIM */
-    0x17ab000u, /* TORQUE_RAMP_RATE */
-    0x17ac000u, /* TORQUE_SETPOINT */
-    0x17b0000u, /* VEL_ESTIMATE */
-    0x17b3000u, /* SHAFT_VEL_LIMIT */
-    0x17b4000u, /* VEL_RAMP_RATE */
-    0x17b5000u, /* VEL_SETPOINT */
-    0x1880000u, /* REQUESTED_STATE */
+static const uint8_t property_key[DARAN_KEY_COUNT * 3u] = {
+    0x00, 0x31, 0xc2, /* CAN_BAUD_RATE */
+    0x00, 0x7b, 0x80, /* UART_BAUDRATE */
+    0x01, 0x40, 0x00, /* FW_VERSION */
+    0x01, 0x50, 0x00, /* HW_VERSION */
+    0x01, 0x60, 0x00, /* IBUS */
+    0x02, 0x30, 0x00, /* SERIAL_NUMBER */
+    0x02, 0xf0, 0x00, /* VBUS_VOLTAGE */
+    0x04, 0x71, 0x00, /* CAN_NODE_ID */
+    0x04, 0x73, 0xc0, /* ENABLE_WATCHDOG */
+    0x04, 0x74, 0x8d, /* ENABLE_CIRCULAR_SETPOINT_LIMIT */
+    0x04, 0x7d, 0x80, /* WATCHDOG_TIMEOUT */
+    0x04, 0x81, 0xce, /* ENABLE_CURRENT_MODE_VEL_LIMIT */
+    0x04, 0x81, 0xd7, /* INPUT_FILTER_BANDWIDTH */
+    0x04, 0x81, 0xe0, /* POS_GAIN */
+    0x04, 0x81, 0xf1, /* VEL_GAIN */
+    0x04, 0x81, 0xf2, /* VEL_INTEGRATOR_GAIN */
+    0x04, 0x81, 0xf3, /* CONTROLLER_VEL_LIMIT */
+    0x04, 0x8b, 0x40, /* TRAJECTORY_DONE */
+    0x04, 0xc0, 0x00, /* CURRENT_STATE */
+    0x05, 0x10, 0x00, /* AXIS_ERROR */
+    0x05, 0x31, 0xd0, /* FET_THERMISTOR_ENABLED */
+    0x05, 0x31, 0xe5, /* FET_TEMP_LIMIT_LOWER */
+    0x05, 0x31, 0xe6, /* FET_TEMP_LIMIT_UPPER */
+    0x05, 0x34, 0x40, /* FET_THERMISTOR_ERROR */
+    0x05, 0x39, 0xc0, /* FET_TEMPERATURE */
+    0x05, 0xc1, 0xca, /* CURRENT_CONTROL_BANDWIDTH */
+    0x05, 0xc1, 0xcb, /* CURRENT_LIM */
+    0x05, 0xc1, 0xea, /* MOTOR_TORQUE_LIM */
+    0x05, 0xc2, 0x41, /* IQ_MEASURED */
+    0x05, 0xd1, 0xd0, /* MOTOR_THERMISTOR_ENABLED */
+    0x05, 0xd1, 0xe5, /* MOTOR_TEMP_LIMIT_LOWER */
+    0x05, 0xd1, 0xe6, /* MOTOR_TEMP_LIMIT_UPPER */
+    0x05, 0xd4, 0x40, /* MOTOR_THERMISTOR_ERROR */
+    0x05, 0xd9, 0xc0, /* MOTOR_TEMPERATURE */
+    0x05, 0xe1, 0x40, /* CIRCULAR_SETPOINT_MAX */
+    0x05, 0xe1, 0x80, /* CIRCULAR_SETPOINT_MIN */
+    0x05, 0xe6, 0x00, /* INPUT_POS */
+    0x05, 0xe6, 0x40, /* INPUT_TORQUE */
+    0x05, 0xe6, 0x80, /* INPUT_VEL */
+    0x05, 0xe6, 0xc0, /* LOAD_INERTIA */
+    0x05, 0xe7, 0xc0, /* POS_ESTIMATE */
+    0x05, 0xe8, 0x40, /* POS_SETPOINT */
+    0x05, 0xe9, 0x00, /* STEPS_PER_TURN */
+    0x05, 0xea, 0x00, /* TORQUE_CONSTANT */
+    0x05, 0xea, 0x40, /* TORQUE_ESTIMATE */
+    0x05, 0xea, 0x80, /* SHAFT_TORQUE_LIM */
+    0x05, 0xea, 0xc0, /* TORQUE_RAMP_RATE */
+    0x05, 0xeb, 0x00, /* TORQUE_SETPOINT */
+    0x05, 0xec, 0x00, /* VEL_ESTIMATE */
+    0x05, 0xec, 0xc0, /* SHAFT_VEL_LIMIT */
+    0x05, 0xed, 0x00, /* VEL_RAMP_RATE */
+    0x05, 0xed, 0x40, /* VEL_SETPOINT */
+    0x06, 0x20, 0x00, /* REQUESTED_STATE */
 };
 
 #endif /* DARAN_PROPERTY_INDEX_H */

@@ -95,11 +95,13 @@ daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t
     size_t high = DARAN_KEY_COUNT;
     while (low < high) {
         size_t mid = low + (high - low) / 2u;
-        if (property_key[mid] == key) {
+        const uint8_t *stored = &property_key[mid * 3u];
+        uint32_t probe = (uint32_t)stored[0] << 16 | (uint32_t)stored[1] << 8 | stored[2];
+        if (probe == key) {
             *prop = (daran_prop_t)mid; /* keys are in the list's order */
             return DARAN_OK;
         }
-        if (property_key[mid] < key) {
+        if (probe < key) {
             low = mid + 1u;
         } else {
             high = mid;

@@ -18,7 +18,7 @@ LIST = os.path.join(ROOT, "include", "daran_properties.h")
 OUT = os.path.join(ROOT, "src", "property_index.h")
 
 SEGMENT_BITS = 6
-MAX_SEGMENTS = 4
+MAX_SEGMENTS = 3  # 1 + 3 * 6 = 19 bits: a key is stored in 3 bytes
 # Segment text is packed 5 bits a character: code = index in this alphabet.
 ALPHABET = "abcdefghijklmnopqrstuvwxyz_I"
 
@@ -102,11 +102,13 @@ def generate():
         out.append("    " + ", ".join("%d" % e for e in ends[i:i + 10]) + ",")
     out.append("};")
     out.append("")
-    out.append("/* Path keys, ascending: scope bit, then 6 bits per segment number. Key i")
+    out.append("/* Path keys, ascending, 3 bytes each, most significant first: scope bit,")
+    out.append(" * then 6 bits per segment number. Key i")
     out.append(" * is the path of property i (the list is sorted the same way). */")
-    out.append("static const uint32_t property_key[DARAN_KEY_COUNT] = {")
+    out.append("static const uint8_t property_key[DARAN_KEY_COUNT * 3u] = {")
     for key, ident in keys:
-        out.append("    0x%07xu, /* %s */" % (key, ident))
+        assert key < (1 << 24)
+        out.append("    0x%02x, 0x%02x, 0x%02x, /* %s */" % (key >> 16, (key >> 8) & 0xFF, key & 0xFF, ident))
     out.append("};")
     out.append("")
     out.append("#endif /* DARAN_PROPERTY_INDEX_H */")
