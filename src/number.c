@@ -235,31 +235,19 @@ static void big_muladd(number_big_t *b, uint32_t mul, uint32_t add)
     }
 }
 
-static void big_mul_pow5(number_big_t *b, int32_t n)
+/* b *= base^n (base 2 or 5), by the largest powers of base below 2^32: a
+ * shift is a multiplication too, and one loop is less code than two. */
+static void big_mul_pow(number_big_t *b, uint32_t base, int32_t n)
 {
-    uint32_t p = 1;
-    for (; n >= 13; n -= 13) {
-        big_muladd(b, 1220703125u, 0); /* 5^13, the largest power of 5 below 2^32 */
-    }
+    uint32_t p = 1, max = 0xFFFFFFFFu / base;
     for (; n > 0; n--) {
-        p *= 5u;
+        if (p > max) {
+            big_muladd(b, p, 0);
+            p = 1;
+        }
+        p *= base;
     }
     big_muladd(b, p, 0);
-}
-
-static void big_shl(number_big_t *b, int32_t n)
-{
-    int32_t limbs = n / 32, bits = n % 32, i;
-    for (i = DARAN_BIG_LIMBS - 1; i >= 0; i--) {
-        uint32_t v = 0;
-        if (i - limbs >= 0) {
-            v = b->w[i - limbs] << bits;
-            if (bits && i - limbs - 1 >= 0) {
-                v |= b->w[i - limbs - 1] >> (32 - bits);
-            }
-        }
-        b->w[i] = v;
-    }
 }
 
 static int big_cmp(const number_big_t *a, const number_big_t *b)
@@ -313,16 +301,8 @@ static DARAN_NOINLINE uint32_t big_decide(const number_scan_t *s, uint32_t lo)
     }
     e = diff_saturated(s->int_len, z + take) + s->exp10;
     /* x * 10^e vs y * 2^f, i.e. (x * 5^e) * 2^e vs y * 2^f */
-    if (e >= 0) {
-        big_mul_pow5(&x, e);
-    } else {
-        big_mul_pow5(&y, -e);
-    }
-    if (e > f) {
-        big_shl(&x, e - f);
-    } else {
-        big_shl(&y, f - e);
-    }
+    big_mul_pow(e >= 0 ? &x : &y, 5u, e >= 0 ? e : -e);
+    big_mul_pow(e > f ? &x : &y, 2u, e > f ? e - f : f - e);
     c = big_cmp(&x, &y);
     if (c > 0 || (c == 0 && (sticky || (lo & 1u)))) {
         return lo + 1u;

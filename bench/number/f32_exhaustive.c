@@ -59,14 +59,14 @@ static int cmp_dec_bin(uint64_t m, int32_t e, uint32_t c, int32_t q)
     x.w[1] = (uint32_t)(m >> 32);
     y.w[0] = c;
     if (e >= 0) {
-        big_mul_pow5(&x, e);
+        big_mul_pow(&x, 5u, e);
     } else {
-        big_mul_pow5(&y, -e);
+        big_mul_pow(&y, 5u, -e);
     }
     if (e > q) {
-        big_shl(&x, e - q);
+        big_mul_pow(&x, 2u, e - q);
     } else {
-        big_shl(&y, q - e);
+        big_mul_pow(&y, 2u, q - e);
     }
     return big_cmp(&x, &y);
 }
