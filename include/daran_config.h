@@ -62,11 +62,17 @@
     (DARAN_RX_RING_SIZE & (DARAN_RX_RING_SIZE - 1)) != 0
 #error "DARAN_RX_RING_SIZE must be a power of two within 16..32768"
 #endif
-#if DARAN_REPLY_MAX < 64 || DARAN_REPLY_MAX > 1024
-#error "DARAN_REPLY_MAX must be within 64..1024"
+#if DARAN_REPLY_MAX < 88 || DARAN_REPLY_MAX > 1024
+#error "DARAN_REPLY_MAX must be within 88..1024 (the longest reply, `e` with every flag, checksum and CRLF, takes 85)"
 #endif
 #if DARAN_REPLY_CRLF != 0 && DARAN_REPLY_CRLF != 1
 #error "DARAN_REPLY_CRLF must be 0 or 1"
+#endif
+#if DARAN_ENABLE_HELP != 0 && DARAN_ENABLE_HELP != 1
+#error "DARAN_ENABLE_HELP must be 0 or 1"
+#endif
+#if DARAN_ENABLE_MULTI_MOTOR != 0 && DARAN_ENABLE_MULTI_MOTOR != 1
+#error "DARAN_ENABLE_MULTI_MOTOR must be 0 or 1"
 #endif
 #if DARAN_MOTOR_ID_MAX < 1 || DARAN_MOTOR_ID_MAX > 255
 #error "DARAN_MOTOR_ID_MAX must be within 1..255"

@@ -84,10 +84,18 @@ typedef struct daran_drive {
  * ring, no partial line, no preset). @p hal must stay valid while the instance
  * is used; every member of it must be set.
  * O(sizeof *drive). Returns DARAN_ERR_BAD_ARGUMENT if a pointer or HAL member
- * is NULL (the instance is then unusable). */
-DARAN_NODISCARD daran_result_t daran_init(daran_drive_t *drive, const daran_hal_t *hal,
-                                          void *hal_ctx, daran_write_fn write,
-                                          void *write_ctx);
+ * is NULL, or if the caller was compiled with other size options than the
+ * library (see daran_init_sized()); the instance is then unusable. */
+#define daran_init(drive, hal, hal_ctx, write, write_ctx) \
+    daran_init_sized((drive), sizeof(daran_drive_t), (hal), (hal_ctx), (write), (write_ctx))
+
+/** What daran_init() calls, with the caller's sizeof(daran_drive_t): a
+ * program compiled with other DARAN_LINE_MAX / DARAN_RX_RING_SIZE /
+ * DARAN_REPLY_MAX than the library would otherwise corrupt memory silently;
+ * here it gets DARAN_ERR_BAD_ARGUMENT instead. */
+DARAN_NODISCARD daran_result_t daran_init_sized(daran_drive_t *drive, size_t drive_size,
+                                                const daran_hal_t *hal, void *hal_ctx,
+                                                daran_write_fn write, void *write_ctx);
 
 /** Register (or, with NULL, remove) the forward hook of a CAN gateway.
  * O(1), cannot fail. */

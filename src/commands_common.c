@@ -31,7 +31,8 @@ daran_result_t daran_field_motor(const daran_field_t *field, uint8_t *out)
 {
     /* Nearly every line carries a plain one- or two-digit id. */
     const char *text = field->text;
-    if (field->len == 1u && text[0] >= '0' && text[0] <= '9') {
+    if (field->len == 1u && text[0] >= '0' && text[0] <= '9' &&
+        (unsigned)(text[0] - '0') <= DARAN_MOTOR_ID_MAX) {
         *out = (uint8_t)(text[0] - '0');
         return DARAN_OK;
     }

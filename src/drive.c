@@ -2,11 +2,11 @@
  * checksum -> fields -> command table -> addressing -> handler -> reply. */
 #include "internal.h"
 
-daran_result_t daran_init(daran_drive_t *drive, const daran_hal_t *hal, void *hal_ctx,
-                          daran_write_fn write, void *write_ctx)
+daran_result_t daran_init_sized(daran_drive_t *drive, size_t drive_size, const daran_hal_t *hal,
+                                void *hal_ctx, daran_write_fn write, void *write_ctx)
 {
-    if (drive == NULL || hal == NULL || write == NULL || hal->get == NULL ||
-        hal->set == NULL || hal->move == NULL || hal->action == NULL) {
+    if (drive == NULL || drive_size != sizeof *drive || hal == NULL || write == NULL ||
+        hal->get == NULL || hal->set == NULL || hal->move == NULL || hal->action == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
     unsigned char *raw = (unsigned char *)drive;

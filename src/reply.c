@@ -20,7 +20,7 @@ void daran_reply_text(daran_drive_t *drive, const char *text, size_t len)
 {
     size_t room = DARAN_REPLY_MAX - TAIL_ROOM - drive->reply_len;
     if (len > room) {
-        len = room; /* cannot happen with the core's replies; DARAN_REPLY_MAX is checked for them */
+        len = room; /* cannot happen: daran_config.h keeps DARAN_REPLY_MAX above the longest reply */
     }
     for (size_t i = 0; i < len; i++) {
         drive->reply[drive->reply_len + i] = text[i];

@@ -99,6 +99,18 @@ static void test_queries_answer_from_the_property_store(void **state)
     assert_string_equal(send(f, "f 1 *87\n"), "0 0 *0\n");
 }
 
+static void test_an_instance_of_another_size_is_refused(void **state)
+{
+    fixture_t *f = *state;
+    /* What a caller compiled with other DARAN_* size options would pass. */
+    assert_int_equal(daran_init_sized(&f->drive, sizeof(daran_drive_t) - 4u, &minimal_hal, &f->axis,
+                                      write_line, &f->link),
+                     DARAN_ERR_BAD_ARGUMENT);
+    assert_int_equal(daran_init_sized(&f->drive, sizeof(daran_drive_t), &minimal_hal, &f->axis,
+                                      write_line, &f->link),
+                     DARAN_OK);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -107,6 +119,7 @@ int main(void)
         cmocka_unit_test_setup(test_estop_blocks_motion_until_cleared_and_closed, setup),
         cmocka_unit_test_setup(test_save_reaches_the_flash_driver, setup),
         cmocka_unit_test_setup(test_queries_answer_from_the_property_store, setup),
+        cmocka_unit_test_setup(test_an_instance_of_another_size_is_refused, setup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
