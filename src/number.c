@@ -451,22 +451,21 @@ static uint32_t shortest_digits(uint32_t exf, uint32_t frac, int32_t *k_out)
     uint32_t vb = round_odd(g, cb << h);
     uint32_t vbl = round_odd(g, (cb - (irregular ? 1u : 2u)) << h);
     uint32_t vbr = round_odd(g, (cb + 2u) << h);
-    uint32_t s = vb >> 2, t;
+    uint32_t s = vb >> 2, t, step;
     int lower_in, upper_in;
     *k_out = k;
-    if (s >= 10u) {
-        /* The interval is narrower than 10 units: at most one multiple of 10. */
-        t = s / 10u * 10u;
+    /* First the multiples of 10 (the interval is narrower than 10 units: it
+     * holds at most one), then the units. */
+    for (step = s >= 10u ? 10u : 1u;; step = 1u) {
+        t = s / step * step;
         lower_in = vbl + out <= t << 2;
-        upper_in = ((t + 10u) << 2) + out <= vbr;
+        upper_in = ((t + step) << 2) + out <= vbr;
         if (lower_in != upper_in) {
-            return lower_in ? t : t + 10u;
+            return lower_in ? t : t + step;
         }
-    }
-    lower_in = vbl + out <= s << 2;
-    upper_in = ((s + 1u) << 2) + out <= vbr;
-    if (lower_in != upper_in) {
-        return lower_in ? s : s + 1u;
+        if (step == 1u) {
+            break;
+        }
     }
     t = (s << 2) + 2u; /* the midpoint of s and s + 1, scaled like vb */
     return vb < t || (vb == t && !(s & 1u)) ? s : s + 1u;
@@ -487,25 +486,20 @@ static size_t put_text(char *buf, const char *text)
  * division (a library call on Cortex-M). */
 static size_t put_digits(char *end, uint32_t hi, uint32_t lo)
 {
-    size_t n = 0;
+    char *p = end;
+    while (hi) {
+        uint32_t t = ((hi % 10u) << 16) | (lo >> 16), up;
+        hi /= 10u;
+        up = t / 10u;
+        t = ((t % 10u) << 16) | (lo & 0xFFFFu);
+        lo = (up << 16) | (t / 10u);
+        *--p = (char)('0' + t % 10u);
+    }
     do {
-        uint32_t r;
-        if (hi) {
-            uint32_t t, up;
-            r = hi % 10u;
-            hi /= 10u;
-            t = (r << 16) | (lo >> 16);
-            up = t / 10u;
-            t = ((t % 10u) << 16) | (lo & 0xFFFFu);
-            lo = (up << 16) | (t / 10u);
-            r = t % 10u;
-        } else {
-            r = lo % 10u;
-            lo /= 10u;
-        }
-        end[-(ptrdiff_t)++n] = (char)('0' + r);
-    } while (hi | lo);
-    return n;
+        *--p = (char)('0' + lo % 10u);
+        lo /= 10u;
+    } while (lo);
+    return (size_t)(end - p);
 }
 
 size_t daran_format_f32(float value, char *buf)
