@@ -1,10 +1,15 @@
 /** @file daran_config.h
  * Compile-time options of the daran-ascii core.
  *
- * Every option has a default here and may be overridden on the compiler
- * command line (-DDARAN_LINE_MAX=200) or in a user header named by
- * DARAN_CONFIG_HEADER (CMake: -DDARAN_CONFIG_HEADER=my_daran_config.h), which
- * is included first. Impossible combinations stop the build with `#error`. */
+ * Every option has a default here and may be overridden in a user header
+ * named by DARAN_CONFIG_HEADER (CMake: -DDARAN_CONFIG_HEADER=my_daran_config.h,
+ * relative to the top-level source folder or absolute; the installed package
+ * carries it along), which is included first, or on the compiler command line
+ * (-DDARAN_LINE_MAX=200, then the same for every file that includes this
+ * header: daran_init() refuses an instance of another size). Impossible
+ * combinations stop the build with `#error`. The path is stringified after
+ * macro expansion: avoid words the compiler predefines (`linux`, `unix`) in it.
+ * A CRLF client's '\r' counts in DARAN_LINE_MAX. */
 #ifndef DARAN_CONFIG_H
 #define DARAN_CONFIG_H
 
