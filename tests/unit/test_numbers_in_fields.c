@@ -123,6 +123,9 @@ static const id_case_t id_cases[] = {
     {1, "x", -1},    {1, "1e2", -1}, {1, "99999999999999999999999", -1},
     {1, "0x1", -1},  {1, "1e-1", -1}, {1, ".", -1},   {1, "nan", -1},  {1, "-0.5", -1},
     {1, "63.5", -1}, {1, "1,0", -1}, {1, "255", -1},  {1, "256", -1},  {1, "1e39", -1},
+    /* 2^64 + 1 and 2^64 must not wrap around to ids 1 and 0 */
+    {1, "18446744073709551617", -1}, {1, "18446744073709551616", -1},
+    {1, "18446744073709551617.0", -1}, {1, "1.8446744073709551617e19", -1},
 };
 
 static void id_case_run(void **state)
@@ -187,6 +190,8 @@ static const mode_case_t mode_cases[] = {
     {"v 1 20 0 0", "invalid mode", 0},
     {"v 1 20 0 6", "invalid mode", 0},
     {"v 1 20 0 99999999999999999999", "invalid mode", 0},
+    {"v 1 20 3 18446744073709551617", "invalid mode", 0},
+    {"c 1 5 3 18446744073709551622", "invalid mode", 0},
     {"v 1 20 0 7", "invalid mode", 0},
     {"v 1 20 3 8", "invalid mode", 0},
     {"v 1 20 3 255", "invalid mode", 0},
@@ -260,6 +265,9 @@ static const int_prop_case_t int_prop_cases[] = {
     {"w axis0.config.can_node_id 99999999999999999999999", "value out of range", 0, 0},
     {"w axis0.config.can_node_id 4294967297", "value out of range", 0, 0},
     {"w axis0.config.can_node_id abc", "invalid value", 0, 0},
+    {"w axis0.config.can_node_id 18446744073709551621", "value out of range", 0, 0},
+    {"w axis1.config.enable_watchdog 18446744073709551617", "value out of range", 0, 0},
+    {"w axis1.config.enable_watchdog 18446744073709551616", "value out of range", 0, 0},
     {"w axis0.config.can_node_id 2.5", "invalid value", 0, 0},
     {"w axis1.config.enable_watchdog 1.0", NULL, DARAN_PROP_ENABLE_WATCHDOG, 1},
     {"w axis1.config.enable_watchdog -0", NULL, DARAN_PROP_ENABLE_WATCHDOG, 0},
