@@ -481,12 +481,11 @@ static size_t put_text(char *buf, const char *text)
 }
 
 /* The decimal digits of hi * 2^32 + lo, written backwards ending at end; returns
- * their count. Above 2^32 each digit is a long division by 10 of the 32-bit high
+ * where they start. Above 2^32 each digit is a long division by 10 of the 32-bit high
  * word and two 16-bit chunks: 32-bit hardware division only, never a 64-bit
  * division (a library call on Cortex-M). */
-static size_t put_digits(char *end, uint32_t hi, uint32_t lo)
+static char *put_digits(char *p, uint32_t hi, uint32_t lo)
 {
-    char *p = end;
     while (hi) {
         uint32_t t = ((hi % 10u) << 16) | (lo >> 16), up;
         hi /= 10u;
@@ -499,7 +498,7 @@ static size_t put_digits(char *end, uint32_t hi, uint32_t lo)
         *--p = (char)('0' + lo % 10u);
         lo /= 10u;
     } while (lo);
-    return (size_t)(end - p);
+    return p;
 }
 
 size_t daran_format_f32(float value, char *buf)
@@ -526,8 +525,8 @@ size_t daran_format_f32(float value, char *buf)
         s /= 10u;
         k++;
     }
-    nd = (int32_t)put_digits(d + sizeof d, 0, s);
-    dig = d + sizeof d - nd;
+    dig = put_digits(d + sizeof d, 0, s);
+    nd = (int32_t)(d + sizeof d - dig);
     k += nd - 1; /* value = d.ddd * 10^k */
     sci = k < -5 || k > 8;
     /* One pass over the digit positions j: the point goes before position pt,
@@ -553,9 +552,10 @@ size_t daran_format_f32(float value, char *buf)
 size_t daran_format_u64(uint64_t value, char *buf)
 {
     char d[DARAN_U64_TEXT_MAX];
-    size_t nd = put_digits(d + sizeof d, (uint32_t)(value >> 32), (uint32_t)value), n;
-    for (n = 0; n < nd; n++) {
-        buf[n] = d[sizeof d - nd + n];
+    const char *p = put_digits(d + sizeof d, (uint32_t)(value >> 32), (uint32_t)value);
+    size_t n = (size_t)(d + sizeof d - p), i;
+    for (i = 0; i < n; i++) {
+        buf[i] = p[i];
     }
-    return nd;
+    return n;
 }
