@@ -9,7 +9,7 @@
  * header: daran_init() refuses an instance of another size). Impossible
  * combinations stop the build with `#error`. The path is stringified after
  * macro expansion: avoid words the compiler predefines (`linux`, `unix`) in it.
- * A CRLF client's '\r' counts in DARAN_LINE_MAX. */
+ * A CRLF client's `\r` counts in DARAN_LINE_MAX. */
 #ifndef DARAN_CONFIG_H
 #define DARAN_CONFIG_H
 
