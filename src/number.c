@@ -213,9 +213,10 @@ static uint32_t round_bits(uint64_t m, int sticky, int32_t e)
         return 0; /* below 2^-150: under half the smallest subnormal */
     }
     below = (unsigned)(hb - nbits); /* bits under the round bit, 16..63 */
+    m |= (uint64_t)(sticky != 0); /* a fraction: some bit under the round bit is set */
     r = m >> below;
     mant = r >> 1;
-    if ((r & 1u) && (sticky || (m & ((UINT64_C(1) << below) - 1u)) || (mant & 1u))) {
+    if ((r & 1u) && ((m << (64u - below)) || (mant & 1u))) {
         mant++;
     }
     if (e2 < -126) {
