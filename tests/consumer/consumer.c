@@ -82,8 +82,12 @@ int main(void)
     static char padded[DARAN_LINE_MAX + 1];
     const char *read_vbus = "r vbus_voltage 1";
 
-    if (daran_init(&drive, &hal, NULL, write_reply, NULL) != DARAN_OK) {
-        printf("FAIL: daran_init\n");
+    /* daran_init() also compares this file's sizeof(daran_drive_t) with the
+     * library's: built with other size options, it must refuse. */
+    daran_result_t init = daran_init(&drive, &hal, NULL, write_reply, NULL);
+    if (init != DARAN_OK) {
+        printf("daran_init refused the instance: %s (sizeof(daran_drive_t) %u here)\n",
+               daran_result_phrase(init), (unsigned)sizeof drive);
         return 1;
     }
     expect(&drive, read_vbus, strlen(read_vbus), "24.5" LINE_END);

@@ -5,9 +5,9 @@
 #      against it (find_package, add_subdirectory, pkg-config), and the
 #      package's version file answers SameMajorVersion;
 #   3. an install built with a user options header (DARAN_CONFIG_HEADER) still
-#      agrees with its consumers;
-#   4. four daran_config.h configurations (defaults, two asked for by the
-#      issue, the upper limits) each build the core and pass tests/config, and
+#      agrees with its consumers, and one built with other options is refused;
+#   4. five daran_config.h configurations (defaults, the issue's (b) and (c),
+#      the lower and the upper limits) each build the core and pass tests/config, and
 #      impossible options stop the compiler at #error.
 # Release flags, Ninja, no sanitizers; budget 2 minutes. Exits non-zero on the
 # first failure, after printing that step's log.
@@ -122,6 +122,23 @@ step "consumer: add_subdirectory of the source tree" \
 step "consumer: cc \$(pkg-config --cflags --libs daran_ascii)" \
   consumer_pkg_config "$prefix" "$work/consumer-pc"
 
+# A program compiled with other size options than the library must be refused
+# by daran_init() (sizeof check), not run on a daran_drive_t of the wrong size.
+consumer_mismatch_refused() {
+  local prefix=$1 out=$2
+  export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+  # shellcheck disable=SC2046
+  cc -std=c99 -Wall -Wextra -Werror -DDARAN_LINE_MAX=64 -o "$out" tests/consumer/consumer.c \
+    $(pkg-config --cflags --libs daran_ascii) || return 1
+  if "$out" >"$out.log" 2>&1; then
+    echo "a consumer built with DARAN_LINE_MAX=64 ran against a 128 library"; return 1
+  fi
+  cat "$out.log"
+  grep -q "daran_init refused the instance: bad argument" "$out.log"
+}
+step "consumer: built with other size options, daran_init() refuses it" \
+  consumer_mismatch_refused "$prefix" "$work/consumer-mismatch"
+
 # The options header must travel with the installed package: consumers check
 # that a 256-byte line (config_c.h) is accepted by the library they link.
 prefix_c="$work/prefix-c"
@@ -147,5 +164,11 @@ step "config (d): upper limits: 1024-byte lines and replies, 32768-byte ring, id
   "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=1024;DARAN_RX_RING_SIZE=32768;DARAN_REPLY_MAX=1024;DARAN_MOTOR_ID_MAX=255" \
   "-DDARAN_TEST_EXPECT=line_max=1024;ring=32768;reply_max=1024;motor_id_max=255"
 
+# The smallest values daran_config.h allows, with both features off: a ring
+# smaller than a line, and ids only up to 1 (the one-digit fast path).
+step "config (e): lower limits: 32-byte lines, 16-byte ring, id 1 only, no help, no multi" \
+  config_suite e \
+  "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=32;DARAN_RX_RING_SIZE=16;DARAN_MOTOR_ID_MAX=1;DARAN_ENABLE_HELP=0;DARAN_ENABLE_MULTI_MOTOR=0" \
+  "-DDARAN_TEST_EXPECT=line_max=32;ring=16;motor_id_max=1;help=0;multi=0"
 printf '%s\n' "${summary[@]}"
 echo "50-package: ${#summary[@]} steps passed in $((SECONDS - start)) s"
