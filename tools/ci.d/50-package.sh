@@ -163,12 +163,12 @@ step "config (d): upper limits: 1024-byte lines and replies, 32768-byte ring, id
   config_suite d \
   "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=1024;DARAN_RX_RING_SIZE=32768;DARAN_REPLY_MAX=1024;DARAN_MOTOR_ID_MAX=255" \
   "-DDARAN_TEST_EXPECT=line_max=1024;ring=32768;reply_max=1024;motor_id_max=255"
-
 # The smallest values daran_config.h allows, with both features off: a ring
 # smaller than a line, and ids only up to 1 (the one-digit fast path).
 step "config (e): lower limits: 32-byte lines, 16-byte ring, id 1 only, no help, no multi" \
   config_suite e \
   "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=32;DARAN_RX_RING_SIZE=16;DARAN_MOTOR_ID_MAX=1;DARAN_ENABLE_HELP=0;DARAN_ENABLE_MULTI_MOTOR=0" \
   "-DDARAN_TEST_EXPECT=line_max=32;ring=16;motor_id_max=1;help=0;multi=0"
+
 printf '%s\n' "${summary[@]}"
 echo "50-package: ${#summary[@]} steps passed in $((SECONDS - start)) s"
