@@ -1,6 +1,7 @@
 /* Harness 2: daran_process_line() with the recording HAL.
  *
- * Input: 4 setup bytes (own id, drive state, forward hook, fault injection),
+ * Input: 4 setup bytes (own id, drive state, forward hook, fault injection,
+ * every error flag, odd values behind the read-only getters),
  * then lines separated by '\n' (any bytes, '\r' and NUL included), each given
  * to daran_process_line() on one instance. After every line it asserts:
  *  - invariant 4: every reply line is well-formed (fuzz_check_reply_line);
@@ -14,6 +15,7 @@
  *    reading axis0.config.can_node_id, no reply, and reaches the forward
  *    hook once, unchanged; and any line the core forwards to another id
  *    behaved the same way. */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -244,6 +246,25 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         break;
     default:
         break;
+    }
+    if ((data[2] & 0x40u) != 0u) {
+        /* every flag bit set: the longest `e` reply */
+        st.hal.props[DARAN_PROP_AXIS_ERROR].u32 |= 0xffffffc0u | (uint32_t)DARAN_FLAG_WARNING_MASK;
+    }
+    if ((data[2] & 0x20u) != 0u) {
+        /* odd values behind the getters: replies must still fit and be ASCII */
+        static const float odd[8] = {NAN, -INFINITY, 3.4028235e38f, -4.0e-45f,
+                                     -0.0f, 1.17549435e-38f, 123456789.0f, -1.5e-7f};
+        float v = odd[data[2] & 7u];
+        static const daran_prop_t ro[] = {
+            DARAN_PROP_VBUS_VOLTAGE,  DARAN_PROP_IBUS,          DARAN_PROP_IQ_MEASURED,
+            DARAN_PROP_POS_ESTIMATE,  DARAN_PROP_VEL_ESTIMATE,  DARAN_PROP_TORQUE_ESTIMATE,
+            DARAN_PROP_FET_TEMPERATURE, DARAN_PROP_MOTOR_TEMPERATURE};
+        for (size_t i = 0; i < sizeof ro / sizeof ro[0]; i++) {
+            st.hal.props[ro[i]].f32 = v;
+        }
+        st.hal.props[DARAN_PROP_FW_VERSION].u32 = 0xffffffffu;
+        st.hal.props[DARAN_PROP_HW_VERSION].u32 = 0xffffffffu;
     }
     fuzz_bind(&st.drive, &st.hal, (data[1] & 4u) != 0u);
     if ((data[2] & 0x80u) != 0u) {

@@ -166,6 +166,7 @@ def main():
         write("line", bytes([0, 0, 0, 0]) + body[:4000])
         write("line", bytes([1, 4, 0, 0]) + body[:4000])
         write("line", bytes([0, 2, 0x83, 5]) + body[:2000])
+        write("line", bytes([0, 0, 0x60 | (len(name) & 7), 0]) + body[:2000])
         # stream: calm polling, and a rarely polled ring (overruns)
         write("stream", b"\x01\x02\x03\x04\x00" + body[:4000])
         write("stream", b"\x11\x22\x33\x44\x3e" + body[:4000])
