@@ -434,6 +434,15 @@ daran_result_t daran_sim_model_move(daran_sim_model_t *m, const daran_move_t *mv
 
 /* ---- one control tick ---- */
 
+/* Far beyond any real drive, far enough below FLT_MAX that the filter's
+ * products (w^2 e, w c t) stay finite: an absurd target (t 1 1e36) or
+ * bandwidth (w ...input_filter_bandwidth 1e38) saturates, it does not turn
+ * the state into inf or nan. At a bandwidth of 1e6/s and any tick the
+ * filter already passes the target straight through. */
+#define FILTER_ACC_MAX 1.0e30f
+#define FILTER_ERROR_MAX 1.0e25f
+#define FILTER_BANDWIDTH_MAX 1.0e6f
+
 /* Exact step of the critically damped second-order filter x'' = w^2 (u - x)
  * - 2 w x' over dt: stable for any bandwidth and tick rate. The state is
  * kept as an offset from the target so that it settles on the target to the
@@ -442,7 +451,10 @@ static void filter_step(daran_sim_model_t *m, float target, float *acc_out)
 {
     float w = cfgf(m, DARAN_PROP_INPUT_FILTER_BANDWIDTH);
     float t = m->dt;
-    float e0 = m->filt_err + (m->filt_ref - target);
+    float e0 = clampf(m->filt_err + (m->filt_ref - target), -FILTER_ERROR_MAX, FILTER_ERROR_MAX);
+    if (w > FILTER_BANDWIDTH_MAX) {
+        w = FILTER_BANDWIDTH_MAX;
+    }
     float v0 = m->filt_vel;
     float k = expf(-w * t);
     float c = v0 + w * e0;
@@ -451,7 +463,14 @@ static void filter_step(daran_sim_model_t *m, float target, float *acc_out)
     m->filt_ref = target;
     m->filt_err = e;
     m->filt_vel = v;
-    *acc_out = -w * w * e - 2.0f * w * v;
+    /* A target near FLT_MAX makes w^2 e overflow. The acceleration only feeds
+     * the torque feed-forward, which the torque limits cut long before: it
+     * saturates here instead of carrying inf (or inf - inf) into the loops. */
+    float acc = -w * w * e - 2.0f * w * v;
+    if (!(acc - acc == 0.0f)) {
+        acc = acc > 0.0f ? FILTER_ACC_MAX : (acc < 0.0f ? -FILTER_ACC_MAX : 0.0f);
+    }
+    *acc_out = acc;
 }
 
 /* The setpoint at the end of this tick: after N ticks of a plan of N * dt
