@@ -77,17 +77,21 @@ daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t
     uint32_t key = scope == DARAN_SCOPE_AXIS ? 1u : 0u;
     uint32_t segments = 0;
     size_t start = 0;
-    for (size_t i = 0; i <= len; i++) {
-        if (i < len && name[i] != '.') {
-            continue;
+    for (;;) {
+        size_t end = start;
+        while (end < len && name[end] != '.') {
+            end++;
         }
-        uint32_t number = find_segment(name + start, i - start);
+        uint32_t number = find_segment(name + start, end - start);
         if (number == 0u || segments == DARAN_MAX_SEGMENTS) {
             return DARAN_ERR_INVALID_PROPERTY;
         }
         key = (key << DARAN_SEGMENT_BITS) | number;
         segments++;
-        start = i + 1u;
+        if (end == len) {
+            break;
+        }
+        start = end + 1u;
     }
     key <<= DARAN_SEGMENT_BITS * (DARAN_MAX_SEGMENTS - segments);
 
