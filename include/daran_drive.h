@@ -30,7 +30,8 @@ typedef void (*daran_write_fn)(void *ctx, const char *line, size_t len);
 
 /** Receives a line the drive does not execute alone: a line addressed to
  * another motor id, or a broadcast (id 0) line that is not a read. The line is
- * as received, checksum field included, without its line end. */
+ * as received, checksum field included, without its `\n` (a CRLF sender's
+ * `\r` stays: it is part of the line). */
 typedef void (*daran_forward_fn)(void *ctx, uint8_t motor_id, const char *line,
                                  size_t len);
 
