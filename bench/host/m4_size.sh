@@ -13,7 +13,7 @@ out=${1:-build/bench/m4}
 mkdir -p "$out"
 cc=arm-none-eabi-gcc
 cpu="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
-cflags="$cpu -Os -std=c99 -ffunction-sections -fdata-sections -fno-math-errno -Iinclude -Isrc -Ibench/baseline"
+cflags="$cpu -Os -std=c99 -ffunction-sections -fdata-sections -fno-math-errno -fno-tree-loop-distribute-patterns -Iinclude -Isrc -Ibench/baseline"
 ldflags="$cpu --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections"
 core_sources=$(sed -n 's/^  \([a-z_0-9]*\.c\)$/src\/\1/p' src/CMakeLists.txt)
 
