@@ -19,10 +19,11 @@ if [ -n "$need_install" ]; then
     echo "40-fuzz: installing $need_install"
     SUDO=""
     [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-    $SUDO apt-get update -qq && $SUDO apt-get install -y --no-install-recommends $need_install || {
+    # shellcheck disable=SC2086  # several package names, split on purpose
+    if ! { $SUDO apt-get update -qq && $SUDO apt-get install -y --no-install-recommends $need_install; }; then
         echo "40-fuzz: FAILED to install $need_install"
         exit 1
-    }
+    fi
 fi
 
 harnesses="stream line number sim"
@@ -62,6 +63,7 @@ run_one() {
 }
 
 echo "40-fuzz: fuzzing $harnesses for ${SECONDS_EACH}s each, two at a time"
+# shellcheck disable=SC2086  # the list, split on purpose
 set -- $harnesses
 while [ $# -gt 0 ]; do
     run_one "$1" &
