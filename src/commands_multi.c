@@ -63,11 +63,12 @@ static daran_result_t timed_trapezoid(float d, float t, float a, daran_move_t *m
 static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uint32_t rel,
                                   daran_move_t *move)
 {
-    float values[3] = {drive->preset[0], drive->preset[1], drive->preset[2]};
-    if (shape == DARAN_SHAPE_Q && !(values[1] > 0.0f)) {
-        return DARAN_ERR_OUT_OF_RANGE; /* the duration */
+    /* q's shape also holds mq's duration to > 0, like the cruise velocity. */
+    const float *values = drive->preset;
+    daran_result_t result = daran_shape_check(shape, values, 3);
+    if (result == DARAN_OK) {
+        result = daran_shape_move(shape, values, 3, move);
     }
-    daran_result_t result = daran_shape_move(shape, values, 3, move);
     if (result != DARAN_OK || shape == DARAN_SHAPE_V || shape == DARAN_SHAPE_C) {
         return result;
     }

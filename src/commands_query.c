@@ -1,4 +1,5 @@
-/* Queries: h f g i e. Each answers with values read from the HAL. */
+/* Queries f g i e (and `r`'s reply): each answers with values read from the
+ * HAL. `h` lives with the command table, whose text it prints. */
 #include "internal.h"
 
 daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *props,
