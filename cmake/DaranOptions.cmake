@@ -12,6 +12,7 @@ option(DARAN_BUILD_SIM "Build the simulated drive (host only)" ${_daran_top_leve
 option(DARAN_BUILD_DEMO "Build the example programs" ${_daran_top_level})
 option(DARAN_SANITIZE "Build everything with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
 set(DARAN_CONFIG_HEADER "" CACHE STRING "A user options header included by daran_config.h")
+set(DARAN_PROPERTY_OMIT "" CACHE STRING "Property ids (DARAN_PROP_<ID> without the prefix) this build leaves out; their paths answer invalid property")
 
 if(DARAN_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)

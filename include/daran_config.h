@@ -33,14 +33,16 @@
 #endif
 
 /** Longest reply line, in bytes including the optional " *NNN" and the line
- * end. The longest reply the core builds is an `e` line with every flag set. */
+ * end. Kept at 88 or more: room for every reply the core builds (the
+ * longest today, `f` with two 16-character floats, takes 42). */
 #ifndef DARAN_REPLY_MAX
 #define DARAN_REPLY_MAX 96
 #endif
 
-/** 1: reply lines end in `\r\n` instead of `\n`. */
+/** 1 (default): reply lines end in `\r\n`, as the ODrive firmware's do and as
+ * the vendor's error decoder expects; 0: in `\n`. */
 #ifndef DARAN_REPLY_CRLF
-#define DARAN_REPLY_CRLF 0
+#define DARAN_REPLY_CRLF 1
 #endif
 
 /** Highest motor id of the protocol (ids are 0..DARAN_MOTOR_ID_MAX, 0 = all). */
@@ -68,7 +70,7 @@
 #error "DARAN_RX_RING_SIZE must be a power of two within 16..32768"
 #endif
 #if DARAN_REPLY_MAX < 88 || DARAN_REPLY_MAX > 1024
-#error "DARAN_REPLY_MAX must be within 88..1024 (the longest reply, `e` with every flag, checksum and CRLF, takes 85)"
+#error "DARAN_REPLY_MAX must be within 88..1024"
 #endif
 #if DARAN_REPLY_CRLF != 0 && DARAN_REPLY_CRLF != 1
 #error "DARAN_REPLY_CRLF must be 0 or 1"

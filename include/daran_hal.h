@@ -28,22 +28,30 @@ extern "C" {
 #define DARAN_STATE_IDLE 1u        /**< motor unpowered; motion commands answer `motor idle` */
 #define DARAN_STATE_CLOSED_LOOP 8u /**< under closed-loop control; motion is accepted */
 
-/** Bits of `axis0.error`, reported by `e`. Every bit except
- * DARAN_FLAG_NVM_CORRUPT blocks motion until `sc`; bits a port defines
- * beyond these block motion too and are shown by number only. */
-#define DARAN_FLAG_ESTOP          (1u << 0) /**< `st` was received */
-#define DARAN_FLAG_WATCHDOG       (1u << 1) /**< watchdog not fed in time */
-#define DARAN_FLAG_MOTOR_OVERTEMP (1u << 2) /**< motor thermistor tripped */
-#define DARAN_FLAG_FET_OVERTEMP   (1u << 3) /**< FET thermistor tripped */
-#define DARAN_FLAG_UNDERVOLTAGE   (1u << 4) /**< bus voltage below trip level */
-#define DARAN_FLAG_NVM_CORRUPT    (1u << 5) /**< stored config was damaged; defaults loaded (warning) */
-#define DARAN_FLAG_WARNING_MASK   DARAN_FLAG_NVM_CORRUPT /**< the bits that do not block motion */
+/** Bits of the error registers, as the vendor's tools name them (ODrive's
+ * bit meanings: bit i is entry i+1 of the vendor client's `error_codes`
+ * lists). The core reads `axis0.error` before every motion command: any bit
+ * set there blocks motion until `sc` (DARAN_FLAG_ESTOP answers `estop
+ * active`, every other bit `motor fault`). A port sets the bits its
+ * hardware detects; docs/porting.md says how to map them. */
+#define DARAN_FLAG_UNDERVOLTAGE       (1u << 1)  /**< axis0.error: DC bus under-voltage */
+#define DARAN_FLAG_MOTOR_FAILED       (1u << 6)  /**< axis0.error: motor.error is not 0 */
+#define DARAN_FLAG_CONTROLLER_FAILED  (1u << 9)  /**< axis0.error: controller.error is not 0 */
+#define DARAN_FLAG_WATCHDOG           (1u << 11) /**< axis0.error: watchdog not fed in time */
+#define DARAN_FLAG_ESTOP              (1u << 14) /**< axis0.error: `st` (e-stop requested) */
+#define DARAN_FLAG_OVERTEMP           (1u << 18) /**< axis0.error: a thermistor tripped */
+#define DARAN_MOTOR_ERROR_STALL       (1u << 16) /**< motor.error: the stall limiter tripped */
+#define DARAN_CONTROLLER_ERROR_OVERSPEED (1u << 0) /**< controller.error: speed beyond vel_limit x vel_limit_tolerance */
+#define DARAN_THERMISTOR_ERROR_OVERTEMP (1u << 0) /**< fet_/motor_thermistor.error: above temp_limit_upper */
+/** axis0.config_warnings: conditions that never block motion; `sc` clears them. */
+#define DARAN_WARNING_NVM_CORRUPT     (1u << 0)  /**< the stored config was damaged; defaults loaded */
 
 /** A property value; the property's type says which member is meant
  * (DARAN_TYPE_BOOL uses u32, 0 or 1). */
 typedef union daran_value {
     float f32;    /**< DARAN_TYPE_F32 */
     uint32_t u32; /**< DARAN_TYPE_U32, and DARAN_TYPE_BOOL as 0 or 1 */
+    int32_t s32;  /**< DARAN_TYPE_S32 */
     uint64_t u64; /**< DARAN_TYPE_U64 */
 } daran_value_t;
 
@@ -65,23 +73,36 @@ typedef enum daran_move_kind {
 
 /** One validated motion command, in protocol units (output shaft).
  *
- * | kind              | pos_deg | vel_rpm       | torque_nm  | rate                       |
- * |-------------------|---------|---------------|------------|----------------------------|
- * | FILTERED_POSITION | target  | -             | -          | filter bandwidth 1/s > 0 (*)|
- * | TRAPEZOID         | target  | cruise > 0 (*)| -          | accel = decel (r/min)/s >0 (*)|
- * | PASSTHROUGH       | target  | feed-forward  | feed-fwd   | -                          |
- * | VELOCITY          | -       | target        | feed-fwd   | -                          |
- * | VELOCITY_RAMP     | -       | target        | -          | ramp (r/min)/s > 0         |
- * | TORQUE            | -       | -             | target     | -                          |
- * | TORQUE_RAMP       | -       | -             | target     | ramp Nm/s > 0              |
- * | IMPEDANCE         | pdes    | vdes          | tff        | -  (kp, kd >= 0)           |
+ * | kind              | pos_deg | vel_rpm        | torque_nm | rate                              |
+ * |-------------------|---------|----------------|-----------|-----------------------------------|
+ * | FILTERED_POSITION | target  | -              | -         | filter bandwidth 1/s > 0 (*)      |
+ * | TRAPEZOID         | target  | cruise > 0 (*) | -         | accel = decel (r/min)/s >= 0 (*)  |
+ * | PASSTHROUGH       | target  | feed-forward   | feed-fwd  | -                                 |
+ * | VELOCITY          | -       | target         | feed-fwd  | -                                 |
+ * | VELOCITY_RAMP     | -       | target         | -         | ramp (r/min)/s >= 0               |
+ * | TORQUE            | -       | -              | target    | -                                 |
+ * | TORQUE_RAMP       | -       | -              | target    | ramp Nm/s >= 0                    |
+ * | IMPEDANCE         | pdes    | vdes           | tff       | -  (kp, kd >= 0)                  |
  *
  * (*) only when the matching DARAN_GIVEN_ bit is set; otherwise the drive
  * keeps its current setting. A given filter bandwidth also becomes
- * `input_filter_bandwidth`, a velocity ramp `vel_ramp_rate`, a torque ramp
+ * `input_filter_bandwidth`; a given trapezoid cruise and acceleration become
+ * `output_shaft.trap_traj_vel_limit` and `trap_traj_accel_limit` =
+ * `trap_traj_decel_limit`; a velocity ramp `vel_ramp_rate`, a torque ramp
  * `torque_ramp_rate`. The HAL also stores the targets in the
  * `output_shaft.input_*` properties (see docs/porting.md). Unused members
- * are 0. */
+ * are 0.
+ *
+ * Zero rates are meaningful (protocol.md section 10.1; the vendor's own
+ * library sends them by default): a TRAPEZOID whose acceleration is 0 (given
+ * or stored) steps the setpoint to the target, bounded only by the drive's
+ * velocity and torque limits, and is done at once; a ramp of 0 holds the
+ * current setpoint where it is. The core never passes a filter bandwidth of
+ * 0 (it clears DARAN_GIVEN_RATE instead: "keep the current one"), nor a
+ * cruise velocity with an acceleration of 0 (the step has no cruise).
+ * With `axis0.trap_traj.config.traj_mode` 2 a TRAPEZOID runs as an S-curve:
+ * each acceleration phase takes 2 v/a (the acceleration rises to a and back
+ * to 0). */
 typedef struct daran_move {
     daran_move_kind_t kind; /**< the control mode; it says which members below are meant */
     uint8_t given;          /**< DARAN_GIVEN_ bits: optional values the line carried */

@@ -1,79 +1,200 @@
 /** @file daran_properties.h
  * The properties a drive exposes to `r` and `w`: the single list from which
- * the core builds its lookup table and the HAL gets its property ids.
+ * the core's ids, lookup, range checks and discovery are all made.
  *
  * X(ID, path, scope, type, access, range, unit)
  *   ID     suffix of the enum constant DARAN_PROP_<ID>
  *   path   the name on the wire; for AXIS scope the part after "axisN."
  *   scope  SYSTEM: the motor id is the line's last field; AXIS: it is the N
  *          of "axisN." at the front of the path
- *   type   F32, U32, U64 or BOOL (a BOOL travels as U32 0/1)
+ *   type   F32, U32, S32, U64 or BOOL (a BOOL travels as U32 0/1)
  *   access RO or RW
  *   range  what a write must satisfy, checked by the core before the HAL
  *          sees it (see daran_range_t)
- *   unit   shown in docs and help; "" when the value has none
+ *   unit   shown by discovery and in docs; "" when the value has none
  *
- * Rows are sorted by (scope SYSTEM first, then path in byte order): the core
- * finds a path by binary search, and a unit test checks the order. */
+ * The vendor's whole table (shared/vendor/properties.csv) plus the
+ * extensions serial_number, config.enable_watchdog, config.watchdog_timeout
+ * and config_warnings. Rows are sorted by the path as a host writes it
+ * (`axis0.` in front of AXIS paths), which is the order discovery lists them
+ * in. Lookup does not depend on the order: tools/gen_property_index.py makes
+ * a perfect hash of the paths at build time, leaving out the rows named in
+ * the CMake list DARAN_PROPERTY_OMIT (their ids stay, their paths answer
+ * `invalid property`).
+ *
+ * Rotor-side families (controller.*, encoder.*, motor.*, trap_traj.*) are in
+ * ODrive units (turns, turn/s, A, counts); output_shaft.* in protocol units
+ * (degrees, r/min, Nm); config.extra_setting.gear_ratio links the two. The
+ * ranges and units are explained in docs/protocol.md. */
 #ifndef DARAN_PROPERTIES_H
 #define DARAN_PROPERTIES_H
 
 /** The property list: one X(ID, path, scope, type, access, range, unit) per
  * property, in the order described at the top of this file. */
 #define DARAN_PROPERTY_LIST(X) \
-    X(CAN_BAUD_RATE,                  "can.config.baud_rate",                                 SYSTEM, U32,  RW, CAN_BAUD,     "bit/s") \
-    X(UART_BAUDRATE,                  "config.uart_baudrate",                                 SYSTEM, U32,  RW, UART_BAUD,    "baud") \
-    X(FW_VERSION,                     "fw_version",                                           SYSTEM, U32,  RO, NONE,         "") \
-    X(HW_VERSION,                     "hw_version",                                           SYSTEM, U32,  RO, NONE,         "") \
-    X(IBUS,                           "ibus",                                                 SYSTEM, F32,  RO, NONE,         "A") \
-    X(SERIAL_NUMBER,                  "serial_number",                                        SYSTEM, U64,  RO, NONE,         "") \
-    X(VBUS_VOLTAGE,                   "vbus_voltage",                                         SYSTEM, F32,  RO, NONE,         "V") \
-    X(CAN_NODE_ID,                    "config.can_node_id",                                   AXIS,   U32,  RW, NODE_ID,      "") \
-    X(ENABLE_WATCHDOG,                "config.enable_watchdog",                               AXIS,   BOOL, RW, BOOL,         "") \
-    X(ENABLE_CIRCULAR_SETPOINT_LIMIT, "config.extra_setting.enable_circular_setpoint_limit",  AXIS,   BOOL, RW, BOOL,         "") \
-    X(WATCHDOG_TIMEOUT,               "config.watchdog_timeout",                              AXIS,   F32,  RW, POSITIVE,     "s") \
-    X(ENABLE_CURRENT_MODE_VEL_LIMIT,  "controller.config.enable_current_mode_vel_limit",      AXIS,   BOOL, RW, BOOL,         "") \
-    X(INPUT_FILTER_BANDWIDTH,         "controller.config.input_filter_bandwidth",             AXIS,   F32,  RW, POSITIVE,     "1/s") \
-    X(POS_GAIN,                       "controller.config.pos_gain",                           AXIS,   F32,  RW, NON_NEGATIVE, "(turn/s)/turn") \
-    X(VEL_GAIN,                       "controller.config.vel_gain",                           AXIS,   F32,  RW, NON_NEGATIVE, "Nm/(turn/s)") \
-    X(VEL_INTEGRATOR_GAIN,            "controller.config.vel_integrator_gain",                AXIS,   F32,  RW, NON_NEGATIVE, "Nm/(turn/s^2)") \
-    X(CONTROLLER_VEL_LIMIT,           "controller.config.vel_limit",                          AXIS,   F32,  RW, POSITIVE,     "turn/s") \
-    X(TRAJECTORY_DONE,                "controller.trajectory_done",                           AXIS,   BOOL, RO, BOOL,         "") \
-    X(CURRENT_STATE,                  "current_state",                                        AXIS,   U32,  RO, NONE,         "") \
-    X(AXIS_ERROR,                     "error",                                                AXIS,   U32,  RO, NONE,         "flags") \
-    X(FET_THERMISTOR_ENABLED,         "fet_thermistor.config.enabled",                        AXIS,   BOOL, RW, BOOL,         "") \
-    X(FET_TEMP_LIMIT_LOWER,           "fet_thermistor.config.temp_limit_lower",               AXIS,   F32,  RW, NONE,         "degC") \
-    X(FET_TEMP_LIMIT_UPPER,           "fet_thermistor.config.temp_limit_upper",               AXIS,   F32,  RW, NONE,         "degC") \
-    X(FET_THERMISTOR_ERROR,           "fet_thermistor.error",                                 AXIS,   U32,  RO, NONE,         "flags") \
-    X(FET_TEMPERATURE,                "fet_thermistor.temperature",                           AXIS,   F32,  RO, NONE,         "degC") \
-    X(CURRENT_CONTROL_BANDWIDTH,      "motor.config.current_control_bandwidth",               AXIS,   F32,  RW, POSITIVE,     "rad/s") \
-    X(CURRENT_LIM,                    "motor.config.current_lim",                             AXIS,   F32,  RW, POSITIVE,     "A") \
-    X(MOTOR_TORQUE_LIM,               "motor.config.torque_lim",                              AXIS,   F32,  RW, POSITIVE,     "Nm") \
-    X(IQ_MEASURED,                    "motor.current_control.Iq_measured",                    AXIS,   F32,  RO, NONE,         "A") \
-    X(MOTOR_THERMISTOR_ENABLED,       "motor_thermistor.config.enabled",                      AXIS,   BOOL, RW, BOOL,         "") \
-    X(MOTOR_TEMP_LIMIT_LOWER,         "motor_thermistor.config.temp_limit_lower",             AXIS,   F32,  RW, NONE,         "degC") \
-    X(MOTOR_TEMP_LIMIT_UPPER,         "motor_thermistor.config.temp_limit_upper",             AXIS,   F32,  RW, NONE,         "degC") \
-    X(MOTOR_THERMISTOR_ERROR,         "motor_thermistor.error",                               AXIS,   U32,  RO, NONE,         "flags") \
-    X(MOTOR_TEMPERATURE,              "motor_thermistor.temperature",                         AXIS,   F32,  RO, NONE,         "degC") \
-    X(CIRCULAR_SETPOINT_MAX,          "output_shaft.circular_setpoint_max",                   AXIS,   F32,  RW, NONE,         "deg") \
-    X(CIRCULAR_SETPOINT_MIN,          "output_shaft.circular_setpoint_min",                   AXIS,   F32,  RW, NONE,         "deg") \
-    X(INPUT_POS,                      "output_shaft.input_pos",                               AXIS,   F32,  RW, NONE,         "deg") \
-    X(INPUT_TORQUE,                   "output_shaft.input_torque",                            AXIS,   F32,  RW, NONE,         "Nm") \
-    X(INPUT_VEL,                      "output_shaft.input_vel",                               AXIS,   F32,  RW, NONE,         "r/min") \
-    X(LOAD_INERTIA,                   "output_shaft.load_inertia",                            AXIS,   F32,  RW, NON_NEGATIVE, "Nm/(r/s^2)") \
-    X(POS_ESTIMATE,                   "output_shaft.pos_estimate",                            AXIS,   F32,  RO, NONE,         "deg") \
-    X(POS_SETPOINT,                   "output_shaft.pos_setpoint",                            AXIS,   F32,  RW, NONE,         "deg") \
-    X(STEPS_PER_TURN,                 "output_shaft.steps_per_turn",                          AXIS,   F32,  RW, POSITIVE,     "count/r") \
-    X(TORQUE_CONSTANT,                "output_shaft.torque_constant",                         AXIS,   F32,  RW, POSITIVE,     "Nm/A") \
-    X(TORQUE_ESTIMATE,                "output_shaft.torque_estimate",                         AXIS,   F32,  RO, NONE,         "Nm") \
-    X(SHAFT_TORQUE_LIM,               "output_shaft.torque_lim",                              AXIS,   F32,  RW, POSITIVE,     "Nm") \
-    X(TORQUE_RAMP_RATE,               "output_shaft.torque_ramp_rate",                        AXIS,   F32,  RW, POSITIVE,     "Nm/s") \
-    X(TORQUE_SETPOINT,                "output_shaft.torque_setpoint",                         AXIS,   F32,  RW, NONE,         "Nm") \
-    X(VEL_ESTIMATE,                   "output_shaft.vel_estimate",                            AXIS,   F32,  RO, NONE,         "r/min") \
-    X(SHAFT_VEL_LIMIT,                "output_shaft.vel_limit",                               AXIS,   F32,  RW, POSITIVE,     "r/min") \
-    X(VEL_RAMP_RATE,                  "output_shaft.vel_ramp_rate",                           AXIS,   F32,  RW, POSITIVE,     "(r/min)/s") \
-    X(VEL_SETPOINT,                   "output_shaft.vel_setpoint",                            AXIS,   F32,  RW, NONE,         "r/min") \
-    X(REQUESTED_STATE,                "requested_state",                                      AXIS,   U32,  RW, AXIS_STATE,   "")
+    X(CALIBRATION_LOCKIN_ACCEL,           "config.calibration_lockin.accel",                     AXIS,   F32,  RW, NON_NEGATIVE, "rad/s^2") \
+    X(CALIBRATION_LOCKIN_CURRENT,         "config.calibration_lockin.current",                   AXIS,   F32,  RW, NON_NEGATIVE, "A") \
+    X(CALIBRATION_LOCKIN_RAMP_DISTANCE,   "config.calibration_lockin.ramp_distance",             AXIS,   F32,  RW, NON_NEGATIVE, "rad") \
+    X(CALIBRATION_LOCKIN_RAMP_TIME,       "config.calibration_lockin.ramp_time",                 AXIS,   F32,  RW, NON_NEGATIVE, "s") \
+    X(CALIBRATION_LOCKIN_VEL,             "config.calibration_lockin.vel",                       AXIS,   F32,  RW, NONE,         "rad/s") \
+    X(CAN_NODE_ID,                        "config.can_node_id",                                  AXIS,   U32,  RW, NODE_ID,      "") \
+    X(ENABLE_STEP_DIR,                    "config.enable_step_dir",                              AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_WATCHDOG,                    "config.enable_watchdog",                              AXIS,   BOOL, RW, BOOL,         "") \
+    X(EXTRA_CIRCULAR_SETPOINT_MAX,        "config.extra_setting.circular_setpoint_max",          AXIS,   F32,  RW, NONE,         "turn") \
+    X(EXTRA_CIRCULAR_SETPOINT_MIN,        "config.extra_setting.circular_setpoint_min",          AXIS,   F32,  RW, NONE,         "turn") \
+    X(ENABLE_120R,                        "config.extra_setting.enable_120r",                    AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_ADAPTIVE_GAIN,               "config.extra_setting.enable_adaptive_gain",           AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_CIRCULAR_SETPOINT_LIMIT,     "config.extra_setting.enable_circular_setpoint_limit", AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_DAMP_IDLE,                   "config.extra_setting.enable_damp_idle",               AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_MULTI_CIRCLE,                "config.extra_setting.enable_multi_circle",            AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_REPLY_STATE,                 "config.extra_setting.enable_reply_state",             AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_STALL_LIMIT,                 "config.extra_setting.enable_stall_limit",             AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENCODER_OFFSET_CALIBRATED,          "config.extra_setting.encoder_offset_calibrated",      AXIS,   BOOL, RW, BOOL,         "") \
+    X(GEAR_RATIO,                         "config.extra_setting.gear_ratio",                     AXIS,   F32,  RW, POSITIVE,     "") \
+    X(STALL_CURRENT_LIMIT,                "config.extra_setting.stall_current_limit",            AXIS,   F32,  RW, NON_NEGATIVE, "A") \
+    X(STALL_TIME_LIMIT,                   "config.extra_setting.stall_time_limit",               AXIS,   F32,  RW, NON_NEGATIVE, "s") \
+    X(STORED_TURNS_COUNTS,                "config.extra_setting.stored_turns_counts",            AXIS,   S32,  RW, NONE,         "count") \
+    X(ZERO_OFFSET_COUNTS,                 "config.extra_setting.zero_offset_counts",             AXIS,   F32,  RW, NONE,         "count") \
+    X(STARTUP_CLOSED_LOOP_CONTROL,        "config.startup_closed_loop_control",                  AXIS,   BOOL, RW, BOOL,         "") \
+    X(STARTUP_ENCODER_INDEX_SEARCH,       "config.startup_encoder_index_search",                 AXIS,   BOOL, RW, BOOL,         "") \
+    X(STARTUP_ENCODER_OFFSET_CALIBRATION, "config.startup_encoder_offset_calibration",           AXIS,   BOOL, RW, BOOL,         "") \
+    X(STARTUP_MOTOR_CALIBRATION,          "config.startup_motor_calibration",                    AXIS,   BOOL, RW, BOOL,         "") \
+    X(TURNS_PER_STEP,                     "config.turns_per_step",                               AXIS,   F32,  RW, POSITIVE,     "turn") \
+    X(WATCHDOG_TIMEOUT,                   "config.watchdog_timeout",                             AXIS,   F32,  RW, POSITIVE,     "s") \
+    X(CONFIG_WARNINGS,                    "config_warnings",                                     AXIS,   U32,  RW, ZERO,         "flags") \
+    X(CIRCULAR_SETPOINT_RANGE,            "controller.config.circular_setpoint_range",           AXIS,   F32,  RW, POSITIVE,     "turn") \
+    X(CIRCULAR_SETPOINTS,                 "controller.config.circular_setpoints",                AXIS,   BOOL, RW, BOOL,         "") \
+    X(CONTROL_MODE,                       "controller.config.control_mode",                      AXIS,   U32,  RW, CONTROL_MODE, "") \
+    X(ENABLE_CURRENT_MODE_VEL_LIMIT,      "controller.config.enable_current_mode_vel_limit",     AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_GAIN_SCHEDULING,             "controller.config.enable_gain_scheduling",            AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_OVERSPEED_ERROR,             "controller.config.enable_overspeed_error",            AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENABLE_VEL_LIMIT,                   "controller.config.enable_vel_limit",                  AXIS,   BOOL, RW, BOOL,         "") \
+    X(GAIN_SCHEDULING_WIDTH,              "controller.config.gain_scheduling_width",             AXIS,   F32,  RW, POSITIVE,     "turn") \
+    X(CONTROLLER_INERTIA,                 "controller.config.inertia",                           AXIS,   F32,  RW, NON_NEGATIVE, "Nm/(turn/s^2)") \
+    X(INPUT_FILTER_BANDWIDTH,             "controller.config.input_filter_bandwidth",            AXIS,   F32,  RW, NON_NEGATIVE, "1/s") \
+    X(INPUT_MODE,                         "controller.config.input_mode",                        AXIS,   U32,  RW, INPUT_MODE,   "") \
+    X(POS_GAIN,                           "controller.config.pos_gain",                          AXIS,   F32,  RW, NON_NEGATIVE, "(turn/s)/turn") \
+    X(CONTROLLER_TORQUE_RAMP_RATE,        "controller.config.torque_ramp_rate",                  AXIS,   F32,  RW, NON_NEGATIVE, "Nm/s") \
+    X(VEL_GAIN,                           "controller.config.vel_gain",                          AXIS,   F32,  RW, NON_NEGATIVE, "Nm/(turn/s)") \
+    X(VEL_INTEGRATOR_GAIN,                "controller.config.vel_integrator_gain",               AXIS,   F32,  RW, NON_NEGATIVE, "Nm/(turn/s^2)") \
+    X(CONTROLLER_VEL_LIMIT,               "controller.config.vel_limit",                         AXIS,   F32,  RW, POSITIVE,     "turn/s") \
+    X(VEL_LIMIT_TOLERANCE,                "controller.config.vel_limit_tolerance",               AXIS,   F32,  RW, POSITIVE,     "") \
+    X(CONTROLLER_VEL_RAMP_RATE,           "controller.config.vel_ramp_rate",                     AXIS,   F32,  RW, NON_NEGATIVE, "(turn/s)/s") \
+    X(CONTROLLER_ERROR,                   "controller.error",                                    AXIS,   U32,  RW, ZERO,         "flags") \
+    X(CONTROLLER_INPUT_POS,               "controller.input_pos",                                AXIS,   F32,  RW, NONE,         "turn") \
+    X(CONTROLLER_INPUT_TORQUE,            "controller.input_torque",                             AXIS,   F32,  RW, NONE,         "Nm") \
+    X(CONTROLLER_INPUT_VEL,               "controller.input_vel",                                AXIS,   F32,  RW, NONE,         "turn/s") \
+    X(CONTROLLER_POS_SETPOINT,            "controller.pos_setpoint",                             AXIS,   F32,  RW, NONE,         "turn") \
+    X(CONTROLLER_TORQUE_SETPOINT,         "controller.torque_setpoint",                          AXIS,   F32,  RW, NONE,         "Nm") \
+    X(TRAJECTORY_DONE,                    "controller.trajectory_done",                          AXIS,   BOOL, RO, BOOL,         "") \
+    X(CONTROLLER_VEL_SETPOINT,            "controller.vel_setpoint",                             AXIS,   F32,  RW, NONE,         "turn/s") \
+    X(CURRENT_STATE,                      "current_state",                                       AXIS,   U32,  RO, NONE,         "") \
+    X(ENCODER_BATTERY_VOLTAGE,            "encoder.battery_voltage",                             AXIS,   F32,  RO, NONE,         "V") \
+    X(ENCODER_CHARGE_STATE,               "encoder.charge_state",                                AXIS,   U32,  RO, NONE,         "") \
+    X(ENCODER_ABS_SPI_CS_GPIO_PIN,        "encoder.config.abs_spi_cs_gpio_pin",                  AXIS,   U32,  RW, NONE,         "") \
+    X(ENCODER_BANDWIDTH,                  "encoder.config.bandwidth",                            AXIS,   F32,  RW, POSITIVE,     "rad/s") \
+    X(ENCODER_CPR,                        "encoder.config.cpr",                                  AXIS,   S32,  RW, POSITIVE,     "count/turn") \
+    X(ENCODER_MODE,                       "encoder.config.mode",                                 AXIS,   U32,  RW, NONE,         "") \
+    X(ENCODER_PRE_CALIBRATED,             "encoder.config.pre_calibrated",                       AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENCODER_USE_INDEX,                  "encoder.config.use_index",                            AXIS,   BOOL, RW, BOOL,         "") \
+    X(ENCODER_VOLTAGE,                    "encoder.encoder_voltage",                             AXIS,   F32,  RO, NONE,         "V") \
+    X(ENCODER_ERROR,                      "encoder.error",                                       AXIS,   U32,  RW, ZERO,         "flags") \
+    X(ENCODER_INDEX_FOUND,                "encoder.index_found",                                 AXIS,   BOOL, RO, BOOL,         "") \
+    X(ENCODER_IS_READY,                   "encoder.is_ready",                                    AXIS,   BOOL, RO, BOOL,         "") \
+    X(ENCODER_POS_ABS,                    "encoder.pos_abs",                                     AXIS,   S32,  RO, NONE,         "count") \
+    X(ENCODER_POS_CIRCULAR,               "encoder.pos_circular",                                AXIS,   F32,  RO, NONE,         "turn") \
+    X(ENCODER_POS_ESTIMATE,               "encoder.pos_estimate",                                AXIS,   F32,  RO, NONE,         "turn") \
+    X(ENCODER_SPI_BUFF_0,                 "encoder.spi_buff_0",                                  AXIS,   U32,  RO, NONE,         "") \
+    X(ENCODER_SPI_BUFF_1,                 "encoder.spi_buff_1",                                  AXIS,   U32,  RO, NONE,         "") \
+    X(ENCODER_SPI_BUFF_2,                 "encoder.spi_buff_2",                                  AXIS,   U32,  RO, NONE,         "") \
+    X(ENCODER_SPI_ERROR_RATE,             "encoder.spi_error_rate",                              AXIS,   F32,  RO, NONE,         "") \
+    X(ENCODER_TURN_ABS,                   "encoder.turn_abs",                                    AXIS,   S32,  RO, NONE,         "turn") \
+    X(ENCODER_VEL_ESTIMATE,               "encoder.vel_estimate",                                AXIS,   F32,  RO, NONE,         "turn/s") \
+    X(AXIS_ERROR,                         "error",                                               AXIS,   U32,  RW, ZERO,         "flags") \
+    X(FET_THERMISTOR_ENABLED,             "fet_thermistor.config.enabled",                       AXIS,   BOOL, RW, BOOL,         "") \
+    X(FET_TEMP_LIMIT_LOWER,               "fet_thermistor.config.temp_limit_lower",              AXIS,   F32,  RW, NONE,         "degC") \
+    X(FET_TEMP_LIMIT_UPPER,               "fet_thermistor.config.temp_limit_upper",              AXIS,   F32,  RW, NONE,         "degC") \
+    X(FET_THERMISTOR_ERROR,               "fet_thermistor.error",                                AXIS,   U32,  RW, ZERO,         "flags") \
+    X(FET_TEMPERATURE,                    "fet_thermistor.temperature",                          AXIS,   F32,  RO, NONE,         "degC") \
+    X(CALIBRATION_CURRENT,                "motor.config.calibration_current",                    AXIS,   F32,  RW, NON_NEGATIVE, "A") \
+    X(CURRENT_CONTROL_BANDWIDTH,          "motor.config.current_control_bandwidth",              AXIS,   F32,  RW, POSITIVE,     "rad/s") \
+    X(CURRENT_LIM,                        "motor.config.current_lim",                            AXIS,   F32,  RW, POSITIVE,     "A") \
+    X(CURRENT_LIM_MARGIN,                 "motor.config.current_lim_margin",                     AXIS,   F32,  RW, NON_NEGATIVE, "A") \
+    X(MOTOR_DIRECTION,                    "motor.config.direction",                              AXIS,   S32,  RW, DIRECTION,    "") \
+    X(MOTOR_TYPE,                         "motor.config.motor_type",                             AXIS,   U32,  RW, MOTOR_TYPE,   "") \
+    X(PHASE_INDUCTANCE,                   "motor.config.phase_inductance",                       AXIS,   F32,  RW, NON_NEGATIVE, "H") \
+    X(PHASE_RESISTANCE,                   "motor.config.phase_resistance",                       AXIS,   F32,  RW, NON_NEGATIVE, "ohm") \
+    X(POLE_PAIRS,                         "motor.config.pole_pairs",                             AXIS,   S32,  RW, POLE_PAIRS,   "") \
+    X(MOTOR_PRE_CALIBRATED,               "motor.config.pre_calibrated",                         AXIS,   BOOL, RW, BOOL,         "") \
+    X(REQUESTED_CURRENT_RANGE,            "motor.config.requested_current_range",                AXIS,   F32,  RW, POSITIVE,     "A") \
+    X(RESISTANCE_CALIB_MAX_VOLTAGE,       "motor.config.resistance_calib_max_voltage",           AXIS,   F32,  RW, NON_NEGATIVE, "V") \
+    X(MOTOR_TORQUE_CONSTANT,              "motor.config.torque_constant",                        AXIS,   F32,  RW, POSITIVE,     "Nm/A") \
+    X(MOTOR_TORQUE_LIM,                   "motor.config.torque_lim",                             AXIS,   F32,  RW, POSITIVE,     "Nm") \
+    X(IBUS_MEASURED,                      "motor.current_control.Ibus",                          AXIS,   F32,  RO, NONE,         "A") \
+    X(ID_MEASURED,                        "motor.current_control.Id_measured",                   AXIS,   F32,  RO, NONE,         "A") \
+    X(ID_SETPOINT,                        "motor.current_control.Id_setpoint",                   AXIS,   F32,  RO, NONE,         "A") \
+    X(IQ_MEASURED,                        "motor.current_control.Iq_measured",                   AXIS,   F32,  RO, NONE,         "A") \
+    X(IQ_SETPOINT,                        "motor.current_control.Iq_setpoint",                   AXIS,   F32,  RO, NONE,         "A") \
+    X(FINAL_V_ALPHA,                      "motor.current_control.final_v_alpha",                 AXIS,   F32,  RO, NONE,         "V") \
+    X(FINAL_V_BETA,                       "motor.current_control.final_v_beta",                  AXIS,   F32,  RO, NONE,         "V") \
+    X(EFFECTIVE_CURRENT_LIM,              "motor.effective_current_lim",                         AXIS,   F32,  RO, NONE,         "A") \
+    X(MOTOR_ERROR,                        "motor.error",                                         AXIS,   U32,  RW, ZERO,         "flags") \
+    X(MOTOR_IS_CALIBRATED,                "motor.is_calibrated",                                 AXIS,   BOOL, RO, BOOL,         "") \
+    X(MOTOR_THERMISTOR_ENABLED,           "motor_thermistor.config.enabled",                     AXIS,   BOOL, RW, BOOL,         "") \
+    X(MOTOR_TEMP_LIMIT_LOWER,             "motor_thermistor.config.temp_limit_lower",            AXIS,   F32,  RW, NONE,         "degC") \
+    X(MOTOR_TEMP_LIMIT_UPPER,             "motor_thermistor.config.temp_limit_upper",            AXIS,   F32,  RW, NONE,         "degC") \
+    X(MOTOR_THERMISTOR_ERROR,             "motor_thermistor.error",                              AXIS,   U32,  RW, ZERO,         "flags") \
+    X(MOTOR_TEMPERATURE,                  "motor_thermistor.temperature",                        AXIS,   F32,  RO, NONE,         "degC") \
+    X(CIRCULAR_SETPOINT_MAX,              "output_shaft.circular_setpoint_max",                  AXIS,   F32,  RW, NONE,         "deg") \
+    X(CIRCULAR_SETPOINT_MIN,              "output_shaft.circular_setpoint_min",                  AXIS,   F32,  RW, NONE,         "deg") \
+    X(HOMING_MOVE_RANGE,                  "output_shaft.homing_move_range",                      AXIS,   F32,  RW, POSITIVE,     "deg") \
+    X(HOMING_POS_SETPOINT,                "output_shaft.homing_pos_setpoint",                    AXIS,   F32,  RW, NONE,         "deg") \
+    X(HOMING_TORQUE_LIM,                  "output_shaft.homing_torque_lim",                      AXIS,   F32,  RW, POSITIVE,     "Nm") \
+    X(HOMING_VEL_LIMIT,                   "output_shaft.homing_vel_limit",                       AXIS,   F32,  RW, POSITIVE,     "r/min") \
+    X(INPUT_POS,                          "output_shaft.input_pos",                              AXIS,   F32,  RW, NONE,         "deg") \
+    X(INPUT_TORQUE,                       "output_shaft.input_torque",                           AXIS,   F32,  RW, NONE,         "Nm") \
+    X(INPUT_VEL,                          "output_shaft.input_vel",                              AXIS,   F32,  RW, NONE,         "r/min") \
+    X(LOAD_INERTIA,                       "output_shaft.load_inertia",                           AXIS,   F32,  RW, NON_NEGATIVE, "Nm/(r/s^2)") \
+    X(POS_ESTIMATE,                       "output_shaft.pos_estimate",                           AXIS,   F32,  RO, NONE,         "deg") \
+    X(POS_SETPOINT,                       "output_shaft.pos_setpoint",                           AXIS,   F32,  RW, NONE,         "deg") \
+    X(STEPS_PER_TURN,                     "output_shaft.steps_per_turn",                         AXIS,   F32,  RW, POSITIVE,     "count/r") \
+    X(TORQUE_CONSTANT,                    "output_shaft.torque_constant",                        AXIS,   F32,  RW, POSITIVE,     "Nm/A") \
+    X(TORQUE_ESTIMATE,                    "output_shaft.torque_estimate",                        AXIS,   F32,  RO, NONE,         "Nm") \
+    X(SHAFT_TORQUE_LIM,                   "output_shaft.torque_lim",                             AXIS,   F32,  RW, POSITIVE,     "Nm") \
+    X(TORQUE_RAMP_RATE,                   "output_shaft.torque_ramp_rate",                       AXIS,   F32,  RW, NON_NEGATIVE, "Nm/s") \
+    X(TORQUE_SETPOINT,                    "output_shaft.torque_setpoint",                        AXIS,   F32,  RW, NONE,         "Nm") \
+    X(TRAP_TRAJ_ACCEL_LIMIT,              "output_shaft.trap_traj_accel_limit",                  AXIS,   F32,  RW, NON_NEGATIVE, "(r/min)/s") \
+    X(TRAP_TRAJ_DECEL_LIMIT,              "output_shaft.trap_traj_decel_limit",                  AXIS,   F32,  RW, NON_NEGATIVE, "(r/min)/s") \
+    X(TRAP_TRAJ_VEL_LIMIT,                "output_shaft.trap_traj_vel_limit",                    AXIS,   F32,  RW, POSITIVE,     "r/min") \
+    X(VEL_ESTIMATE,                       "output_shaft.vel_estimate",                           AXIS,   F32,  RO, NONE,         "r/min") \
+    X(SHAFT_VEL_LIMIT,                    "output_shaft.vel_limit",                              AXIS,   F32,  RW, POSITIVE,     "r/min") \
+    X(VEL_RAMP_RATE,                      "output_shaft.vel_ramp_rate",                          AXIS,   F32,  RW, NON_NEGATIVE, "(r/min)/s") \
+    X(VEL_SETPOINT,                       "output_shaft.vel_setpoint",                           AXIS,   F32,  RW, NONE,         "r/min") \
+    X(REQUESTED_STATE,                    "requested_state",                                     AXIS,   U32,  RW, AXIS_STATE,   "") \
+    X(TRAP_ACCEL_LIMIT,                   "trap_traj.config.accel_limit",                        AXIS,   F32,  RW, NON_NEGATIVE, "(turn/s)/s") \
+    X(TRAP_DECEL_LIMIT,                   "trap_traj.config.decel_limit",                        AXIS,   F32,  RW, NON_NEGATIVE, "(turn/s)/s") \
+    X(TRAJ_MODE,                          "trap_traj.config.traj_mode",                          AXIS,   U32,  RW, TRAJ_MODE,    "") \
+    X(TRAP_VEL_LIMIT,                     "trap_traj.config.vel_limit",                          AXIS,   F32,  RW, POSITIVE,     "turn/s") \
+    X(CAN_BAUD_RATE,                      "can.config.baud_rate",                                SYSTEM, U32,  RW, CAN_BAUD,     "bit/s") \
+    X(CAN_HEARTBEAT_MS,                   "can.config.heartbeat_ms",                             SYSTEM, U32,  RW, NONE,         "ms") \
+    X(CAN_PROTOCOL,                       "can.config.protocol",                                 SYSTEM, U32,  RW, CAN_PROTOCOL, "") \
+    X(CAN_TIMEOUT_MS,                     "can.config.timeout_ms",                               SYSTEM, U32,  RW, NONE,         "ms") \
+    X(CAN_ERROR,                          "can.error",                                           SYSTEM, U32,  RW, ZERO,         "flags") \
+    X(BRAKE_RESISTANCE,                   "config.brake_resistance",                             SYSTEM, F32,  RW, NON_NEGATIVE, "ohm") \
+    X(DC_BUS_OVERVOLTAGE_TRIP_LEVEL,      "config.dc_bus_overvoltage_trip_level",                SYSTEM, F32,  RW, POSITIVE,     "V") \
+    X(DC_BUS_UNDERVOLTAGE_TRIP_LEVEL,     "config.dc_bus_undervoltage_trip_level",               SYSTEM, F32,  RW, NON_NEGATIVE, "V") \
+    X(DC_MAX_NEGATIVE_CURRENT,            "config.dc_max_negative_current",                      SYSTEM, F32,  RW, NON_POSITIVE, "A") \
+    X(DC_MAX_POSITIVE_CURRENT,            "config.dc_max_positive_current",                      SYSTEM, F32,  RW, NON_NEGATIVE, "A") \
+    X(ENABLE_UART,                        "config.enable_uart",                                  SYSTEM, BOOL, RW, BOOL,         "") \
+    X(MAX_REGEN_CURRENT,                  "config.max_regen_current",                            SYSTEM, F32,  RW, NON_NEGATIVE, "A") \
+    X(UART_BAUDRATE,                      "config.uart_baudrate",                                SYSTEM, U32,  RW, UART_BAUD,    "baud") \
+    X(FW_VERSION,                         "fw_version",                                          SYSTEM, U32,  RO, NONE,         "") \
+    X(HW_VERSION,                         "hw_version",                                          SYSTEM, U32,  RO, NONE,         "") \
+    X(IBUS,                               "ibus",                                                SYSTEM, F32,  RO, NONE,         "A") \
+    X(SERIAL_NUMBER,                      "serial_number",                                       SYSTEM, U64,  RO, NONE,         "") \
+    X(SERIAL_NUMBER_H,                    "serial_number_h",                                     SYSTEM, U32,  RO, NONE,         "") \
+    X(SERIAL_NUMBER_L,                    "serial_number_l",                                     SYSTEM, U32,  RO, NONE,         "") \
+    X(VBUS_VOLTAGE,                       "vbus_voltage",                                        SYSTEM, F32,  RO, NONE,         "V")
 
 /** Property ids: DARAN_PROP_<ID> for each row of DARAN_PROPERTY_LIST, in
  * list order, then DARAN_PROP_COUNT (how many there are). */
@@ -88,22 +209,34 @@ typedef enum daran_prop {
 
 /** How a property's value travels in daran_value_t. */
 typedef enum daran_prop_type {
-    DARAN_TYPE_F32, /**< float32, member f32 */
-    DARAN_TYPE_U32, /**< unsigned 32-bit, member u32 */
-    DARAN_TYPE_U64, /**< unsigned 64-bit, member u64 */
-    DARAN_TYPE_BOOL /**< 0 or 1 in member u32 */
+    DARAN_TYPE_F32,  /**< float32, member f32 */
+    DARAN_TYPE_U32,  /**< unsigned 32-bit, member u32 */
+    DARAN_TYPE_S32,  /**< signed 32-bit, member s32 */
+    DARAN_TYPE_U64,  /**< unsigned 64-bit, member u64 */
+    DARAN_TYPE_BOOL  /**< 0 or 1 in member u32 */
 } daran_prop_type_t;
 
-/** What a written value must satisfy; the core checks it before the HAL's set(). */
+/** What a written value must satisfy; the core checks it before the HAL's
+ * set(). Float ranges apply to F32 properties, the others to integers. */
 typedef enum daran_range {
-    DARAN_RANGE_NONE,         /**< any finite value */
+    DARAN_RANGE_NONE,         /**< any finite value (any integer of the type) */
     DARAN_RANGE_NON_NEGATIVE, /**< >= 0 */
     DARAN_RANGE_POSITIVE,     /**< > 0 */
+    DARAN_RANGE_NON_POSITIVE, /**< <= 0 */
     DARAN_RANGE_BOOL,         /**< 0 or 1 */
+    DARAN_RANGE_ZERO,         /**< only 0: an error register, cleared by writing 0 */
     DARAN_RANGE_NODE_ID,      /**< 1..DARAN_MOTOR_ID_MAX */
     DARAN_RANGE_UART_BAUD,    /**< 9600, 19200, 38400, 57600, 115200 */
     DARAN_RANGE_CAN_BAUD,     /**< 125000, 250000, 500000, 1000000 */
-    DARAN_RANGE_AXIS_STATE    /**< DARAN_STATE_IDLE or DARAN_STATE_CLOSED_LOOP */
+    DARAN_RANGE_CAN_PROTOCOL, /**< 0 none, 1 simple (ODrive's CAN protocols) */
+    DARAN_RANGE_AXIS_STATE,   /**< DARAN_STATE_IDLE or DARAN_STATE_CLOSED_LOOP */
+    DARAN_RANGE_CONTROL_MODE, /**< ODrive control modes 1 torque, 2 velocity, 3 position */
+    DARAN_RANGE_INPUT_MODE,   /**< ODrive input modes 1, 2, 3, 5, 6, 9 */
+    DARAN_RANGE_TRAJ_MODE,    /**< 1 trapezoid, 2 S-curve */
+    DARAN_RANGE_DIRECTION,    /**< -1 or 1 */
+    DARAN_RANGE_MOTOR_TYPE,   /**< ODrive motor types 0 high current, 2 gimbal, 3 ACIM */
+    DARAN_RANGE_POLE_PAIRS,   /**< 1..128 */
+    DARAN_RANGE_COUNT         /**< how many ranges there are; not a range */
 } daran_range_t;
 
 #endif /* DARAN_PROPERTIES_H */

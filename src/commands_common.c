@@ -66,7 +66,7 @@ daran_result_t daran_check_motion_allowed(daran_drive_t *drive)
     if ((value.u32 & DARAN_FLAG_ESTOP) != 0u) {
         return DARAN_ERR_ESTOP_ACTIVE;
     }
-    if ((value.u32 & ~(uint32_t)DARAN_FLAG_WARNING_MASK) != 0u) {
+    if (value.u32 != 0u) {
         return DARAN_ERR_MOTOR_FAULT;
     }
     result = daran_get(drive, DARAN_PROP_CURRENT_STATE, &value);

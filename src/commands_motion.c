@@ -22,10 +22,10 @@ typedef struct motion_shape {
 static const motion_shape_t shapes[DARAN_SHAPE_COUNT] = {
     [DARAN_SHAPE_T] = {DARAN_MOVE_FILTERED_POSITION, 3,
                        {VALUE(SLOT_POS, CHECK_ANY), VALUE(SLOT_IGNORED, CHECK_ANY),
-                        VALUE(SLOT_RATE, CHECK_POSITIVE)}},
+                        VALUE(SLOT_RATE, CHECK_NON_NEGATIVE)}},
     [DARAN_SHAPE_Q] = {DARAN_MOVE_TRAPEZOID, 3,
                        {VALUE(SLOT_POS, CHECK_ANY), VALUE(SLOT_VEL, CHECK_POSITIVE),
-                        VALUE(SLOT_RATE, CHECK_POSITIVE)}},
+                        VALUE(SLOT_RATE, CHECK_NON_NEGATIVE)}},
     [DARAN_SHAPE_P] = {DARAN_MOVE_PASSTHROUGH, 3,
                        {VALUE(SLOT_POS, CHECK_ANY), VALUE(SLOT_VEL, CHECK_ANY),
                         VALUE(SLOT_TORQUE, CHECK_ANY)}},
@@ -120,7 +120,8 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
         }
     }
 
-    /* v and c: the mode says what the parameter is (D11: a ramp needs a rate > 0). */
+    /* v and c: the mode says what the parameter is. A ramp needs a rate
+     * >= 0; 0 holds the setpoint where it is (spec 10.1). */
     if (shape->kind == DARAN_MOVE_VELOCITY && slot[SLOT_MODE] == 2.0f) {
         move->kind = DARAN_MOVE_VELOCITY_RAMP;
         slot[SLOT_RATE] = slot[SLOT_PARAM];
@@ -131,8 +132,17 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
         slot[SLOT_RATE] = slot[SLOT_PARAM];
     }
     if ((move->kind == DARAN_MOVE_VELOCITY_RAMP || move->kind == DARAN_MOVE_TORQUE_RAMP) &&
-        !(slot[SLOT_RATE] > 0.0f)) {
+        !(slot[SLOT_RATE] >= 0.0f)) {
         return DARAN_ERR_OUT_OF_RANGE;
+    }
+    if (slot[SLOT_RATE] == 0.0f) {
+        slot[SLOT_RATE] = 0.0f; /* -0 is 0: the rate becomes a property that reads back */
+        if (move->kind == DARAN_MOVE_FILTERED_POSITION) {
+            move->given &= (uint8_t)~DARAN_GIVEN_RATE; /* bandwidth 0: keep the current one */
+        } else if (move->kind == DARAN_MOVE_TRAPEZOID && (move->given & DARAN_GIVEN_RATE) != 0u) {
+            move->given &= (uint8_t)~DARAN_GIVEN_VEL; /* acceleration 0: a step, no cruise */
+            slot[SLOT_VEL] = 0.0f;
+        }
     }
 
     move->pos_deg = slot[SLOT_POS];

@@ -30,44 +30,77 @@ daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request
     return DARAN_OK;
 }
 
-/* Cruise velocity (deg/s) that covers distance d (deg) in exactly t (s) at
- * accel a (deg/s^2): the smaller root of v^2 - a t v + a d = 0, written as
- * 2ad / (at + sqrt(...)) so no cancellation eats its digits. The move goes
- * to the HAL as an ordinary trapezoid in r/min and (r/min)/s. */
-static daran_result_t timed_trapezoid(float d, float t, float a, daran_move_t *move)
+/* Cruise velocity that covers distance d (deg) in exactly t (s) at accel a
+ * (deg/s^2), the move going to the HAL as an ordinary trapezoid in r/min and
+ * (r/min)/s. A trapezoid's ramps cover v^2/a together, an S-curve's (each
+ * ramp 2v/a long) 2v^2/a, so t = d/v + ramps/v: v is the smaller root of
+ * s v^2 - a t v + a d = 0 with s = 1 or 2, written as 2ad / (at + sqrt(...))
+ * so no cancellation eats its digits. A zero duration or acceleration can
+ * only be kept by a drive that need not move (spec 10.1). */
+static daran_result_t timed_move(float d, float t, float a, bool s_curve, daran_move_t *move)
 {
+    if (d == 0.0f) {
+        move->given = 0; /* nothing to plan: the drive keeps its settings */
+        move->vel_rpm = 0.0f;
+        move->rate = 0.0f;
+        return DARAN_OK;
+    }
+    if (t == 0.0f || a == 0.0f) {
+        return DARAN_ERR_TRAJECTORY_INFEASIBLE;
+    }
+    float ramps = s_curve ? 8.0f : 4.0f;
     float at = a * t;
-    float discriminant = at * at - 4.0f * a * d;
+    float discriminant = at * at - ramps * a * d;
     if (!daran_is_finite(discriminant)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
     if (discriminant >= 0.0f) {
-        /* d == 0 completes at once whatever the cruise velocity (D19). */
-        float v = d > 0.0f ? 2.0f * a * d / (at + sqrtf(discriminant)) : at / 2.0f;
+        float v = 2.0f * a * d / (at + sqrtf(discriminant));
         move->vel_rpm = v / DEG_PER_S_PER_RPM;
         move->rate = a / DEG_PER_S_PER_RPM;
         return DARAN_OK;
     }
     if (-discriminant <= TIMED_MOVE_SLACK * at * at) {
-        /* The triangle that lands exactly on time: peak 2d/t, acceleration 4d/t^2. */
+        /* The triangle that lands exactly on time: peak 2d/t, acceleration
+         * 4d/t^2 (trapezoid) or 8d/t^2 (S-curve). */
         move->vel_rpm = 2.0f * d / t / DEG_PER_S_PER_RPM;
-        move->rate = 4.0f * d / (t * t) / DEG_PER_S_PER_RPM;
+        move->rate = ramps * d / (t * t) / DEG_PER_S_PER_RPM;
         return DARAN_OK;
     }
     return DARAN_ERR_TRAJECTORY_INFEASIBLE;
 }
 
+/* S-curve planning when the drive says so; a port that left traj_mode out
+ * of its table has trapezoids only. */
+static daran_result_t uses_s_curve(daran_drive_t *drive, bool *s_curve)
+{
+    daran_value_t mode;
+    daran_result_t result = daran_get(drive, DARAN_PROP_TRAJ_MODE, &mode);
+    *s_curve = result == DARAN_OK && mode.u32 == 2u;
+    return result == DARAN_ERR_INVALID_PROPERTY ? DARAN_OK : result;
+}
+
 /* The move a start makes of the preset. Positional starts aim at p1,
  * absolute or relative to the current position setpoint; `mq` reads p2 as a
- * duration and picks its own cruise velocity. */
+ * duration and p3 as the acceleration, both >= 0, and picks its own cruise
+ * velocity. */
 static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uint32_t rel,
                                   daran_move_t *move)
 {
-    /* q's shape also holds mq's duration to > 0, like the cruise velocity. */
     const float *values = drive->preset;
-    daran_result_t result = daran_shape_check(shape, values, 3);
-    if (result == DARAN_OK) {
-        result = daran_shape_move(shape, values, 3, move);
+    daran_result_t result = DARAN_OK;
+    if (shape == DARAN_SHAPE_Q) {
+        if (!(values[1] >= 0.0f) || !(values[2] >= 0.0f)) {
+            return DARAN_ERR_OUT_OF_RANGE;
+        }
+        /* q's own check would refuse the duration 0 a host may send */
+        const float shape_values[3] = {values[0], 1.0f, values[2]};
+        result = daran_shape_move(shape, shape_values, 3, move);
+    } else {
+        result = daran_shape_check(shape, values, 3);
+        if (result == DARAN_OK) {
+            result = daran_shape_move(shape, values, 3, move);
+        }
     }
     if (result != DARAN_OK || shape == DARAN_SHAPE_V || shape == DARAN_SHAPE_C) {
         return result;
@@ -86,8 +119,14 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
     if (shape != DARAN_SHAPE_Q) {
         return DARAN_OK;
     }
-    return timed_trapezoid(fabsf(move->pos_deg - setpoint.f32), values[1],
-                           values[2] * DEG_PER_S_PER_RPM, move);
+    bool s_curve;
+    result = uses_s_curve(drive, &s_curve);
+    if (result != DARAN_OK) {
+        return result;
+    }
+    move->given = DARAN_GIVEN_VEL | DARAN_GIVEN_RATE;
+    return timed_move(fabsf(move->pos_deg - setpoint.f32), values[1],
+                      values[2] * DEG_PER_S_PER_RPM, s_curve, move);
 }
 
 daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *request)

@@ -8,74 +8,136 @@ daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request)
     return daran_reply_properties(drive, &request->prop, 1);
 }
 
-/* The integers the set ranges allow, each list ending in 0 (no set holds 0). */
-static const uint32_t allowed_sets[] = {
-    9600u, 19200u, 38400u, 57600u, 115200u, 0u,   /* DARAN_RANGE_UART_BAUD, from 0 */
-    125000u, 250000u, 500000u, 1000000u, 0u,      /* DARAN_RANGE_CAN_BAUD, from 6 */
-    DARAN_STATE_IDLE, DARAN_STATE_CLOSED_LOOP, 0u, /* DARAN_RANGE_AXIS_STATE, from 11 */
+/* A range as data: an interval [low, high] or a set of values, and what
+ * it means for a float32. One row per daran_range_t. */
+enum rule_kind { RULE_INTERVAL, RULE_SET };
+typedef struct range_rule {
+    uint8_t kind;
+    uint8_t set_len;   /* RULE_SET: how many values, from range_sets[low] */
+    int8_t float_sign; /* F32: -1 <= 0, 0 any, 1 >= 0, 2 > 0 */
+    int32_t low;
+    int32_t high;
+} range_rule_t;
+
+#define ANY_INT {RULE_INTERVAL, 0, 0, INT32_MIN, INT32_MAX}
+static const int32_t range_sets[] = {
+    9600, 19200, 38400, 57600, 115200, /* 0: UART_BAUD */
+    125000, 250000, 500000, 1000000,   /* 5: CAN_BAUD */
+    (int32_t)DARAN_STATE_IDLE, (int32_t)DARAN_STATE_CLOSED_LOOP, /* 9: AXIS_STATE */
+    1, 2, 3, 5, 6, 9,                  /* 11: INPUT_MODE */
+    -1, 1,                             /* 17: DIRECTION */
+    0, 2, 3,                           /* 19: MOTOR_TYPE */
 };
 
-static bool integer_in_range(daran_range_t range, uint64_t value)
+static const range_rule_t range_rules[DARAN_RANGE_COUNT] = {
+    [DARAN_RANGE_NONE] = ANY_INT,
+    [DARAN_RANGE_NON_NEGATIVE] = {RULE_INTERVAL, 0, 1, 0, INT32_MAX},
+    [DARAN_RANGE_POSITIVE] = {RULE_INTERVAL, 0, 2, 1, INT32_MAX},
+    [DARAN_RANGE_NON_POSITIVE] = {RULE_INTERVAL, 0, -1, INT32_MIN, 0},
+    [DARAN_RANGE_BOOL] = {RULE_INTERVAL, 0, 0, 0, 1},
+    [DARAN_RANGE_ZERO] = {RULE_INTERVAL, 0, 0, 0, 0},
+    [DARAN_RANGE_NODE_ID] = {RULE_INTERVAL, 0, 0, 1, DARAN_MOTOR_ID_MAX},
+    [DARAN_RANGE_UART_BAUD] = {RULE_SET, 5, 0, 0, 0},
+    [DARAN_RANGE_CAN_BAUD] = {RULE_SET, 4, 0, 5, 0},
+    [DARAN_RANGE_CAN_PROTOCOL] = {RULE_INTERVAL, 0, 0, 0, 1},
+    [DARAN_RANGE_AXIS_STATE] = {RULE_SET, 2, 0, 9, 0},
+    [DARAN_RANGE_CONTROL_MODE] = {RULE_INTERVAL, 0, 0, 1, 3},
+    [DARAN_RANGE_INPUT_MODE] = {RULE_SET, 6, 0, 11, 0},
+    [DARAN_RANGE_TRAJ_MODE] = {RULE_INTERVAL, 0, 0, 1, 2},
+    [DARAN_RANGE_DIRECTION] = {RULE_SET, 2, 0, 17, 0},
+    [DARAN_RANGE_MOTOR_TYPE] = {RULE_SET, 3, 0, 19, 0},
+    [DARAN_RANGE_POLE_PAIRS] = {RULE_INTERVAL, 0, 0, 1, 128},
+};
+
+static bool float_in_range(const range_rule_t *rule, float value)
 {
-    size_t i;
-    switch (range) {
-    case DARAN_RANGE_BOOL:
-        return value <= 1u;
-    case DARAN_RANGE_NODE_ID:
-        return value >= 1u && value <= DARAN_MOTOR_ID_MAX;
-    case DARAN_RANGE_UART_BAUD:
-        i = 0;
-        break;
-    case DARAN_RANGE_CAN_BAUD:
-        i = 6;
-        break;
-    case DARAN_RANGE_AXIS_STATE:
-        i = 11;
-        break;
+    switch (rule->float_sign) {
+    case -1:
+        return value <= 0.0f;
+    case 1:
+        return value >= 0.0f;
+    case 2:
+        return value > 0.0f;
     default:
-        return true; /* the integer properties without a listed range take any value */
+        return true;
     }
-    for (; allowed_sets[i] != 0u; i++) {
-        if (value == allowed_sets[i]) {
+}
+
+static bool integer_in_range(const range_rule_t *rule, int64_t value)
+{
+    if (rule->kind == RULE_INTERVAL) {
+        return value >= rule->low && value <= rule->high;
+    }
+    for (uint8_t i = 0; i < rule->set_len; i++) {
+        if (value == range_sets[rule->low + i]) {
             return true;
         }
     }
     return false;
 }
 
+/* An integer field of a property of @p type: the value, or why not. A
+ * u64 takes the whole unsigned range and no range rule (serial numbers are
+ * read-only); s32 takes a sign. */
+static daran_result_t parse_integer(daran_prop_type_t type, const daran_field_t *field,
+                                    uint64_t *magnitude, bool *negative)
+{
+    const char *text = field->text;
+    size_t len = field->len;
+    *negative = false;
+    if (type == DARAN_TYPE_S32 && len > 1u && text[0] == '-' && text[1] != '+' &&
+        text[1] != '-') {
+        *negative = true;
+        text++;
+        len--;
+    }
+    return daran_parse_u64(text, len, magnitude);
+}
+
 /* Grammar and range of the written value, as the property's table row says. */
 static daran_result_t parse_value(daran_property_t row, const daran_field_t *field,
                                   daran_value_t *value)
 {
-    daran_range_t range = DARAN_PROPERTY_RANGE(row);
-    uint64_t integer;
-    daran_result_t result;
-    if (DARAN_PROPERTY_TYPE(row) == DARAN_TYPE_F32) {
-        result = daran_field_f32(field, &value->f32);
-        if (result == DARAN_OK && ((range == DARAN_RANGE_POSITIVE && !(value->f32 > 0.0f)) ||
-                                   (range == DARAN_RANGE_NON_NEGATIVE && !(value->f32 >= 0.0f)))) {
+    const range_rule_t *rule = &range_rules[DARAN_PROPERTY_RANGE(row)];
+    daran_prop_type_t type = DARAN_PROPERTY_TYPE(row);
+    if (type == DARAN_TYPE_F32) {
+        daran_result_t result = daran_field_f32(field, &value->f32);
+        if (result == DARAN_OK && !float_in_range(rule, value->f32)) {
             result = DARAN_ERR_OUT_OF_RANGE;
         }
         return result;
     }
-    result = daran_parse_u64(field->text, field->len, &integer);
+    uint64_t magnitude;
+    bool negative;
+    daran_result_t result = parse_integer(type, field, &magnitude, &negative);
     if (result != DARAN_OK) {
         return result;
     }
-    if (DARAN_PROPERTY_TYPE(row) == DARAN_TYPE_U64) {
-        value->u64 = integer;
-    } else {
-        value->u32 = (uint32_t)integer;
+    if (type == DARAN_TYPE_U64) {
+        value->u64 = magnitude;
+        return DARAN_OK;
     }
-    if (DARAN_PROPERTY_TYPE(row) != DARAN_TYPE_U64 && integer > UINT32_MAX) {
+    /* Past 2^31 nothing but a u32 can fit: check before the signed view. */
+    if (magnitude > (type == DARAN_TYPE_S32 ? (negative ? 0x80000000u : 0x7FFFFFFFu) : UINT32_MAX)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
-    return integer_in_range(range, integer) ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+    int64_t signed_value = negative ? -(int64_t)magnitude : (int64_t)magnitude;
+    bool unbounded_u32 = type != DARAN_TYPE_S32 && rule->kind == RULE_INTERVAL &&
+                         rule->high == INT32_MAX && signed_value >= rule->low;
+    if (!unbounded_u32 && !integer_in_range(rule, signed_value)) {
+        return DARAN_ERR_OUT_OF_RANGE;
+    }
+    if (type == DARAN_TYPE_S32) {
+        value->s32 = (int32_t)signed_value;
+    } else {
+        value->u32 = (uint32_t)magnitude;
+    }
+    return DARAN_OK;
 }
 
 daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)
 {
-    daran_property_t row = daran_properties[request->prop];
+    daran_property_t row = daran_property_row(request->prop);
     if (DARAN_PROPERTY_ACCESS(row) != DARAN_ACCESS_RW) {
         return DARAN_ERR_READ_ONLY;
     }

@@ -17,12 +17,20 @@ daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *
         if (i > 0u) {
             daran_reply_space(drive);
         }
-        switch (DARAN_PROPERTY_TYPE(daran_properties[props[i]])) {
+        switch (DARAN_PROPERTY_TYPE(daran_property_row(props[i]))) {
         case DARAN_TYPE_F32:
             daran_reply_f32(drive, values[i].f32);
             break;
         case DARAN_TYPE_U64:
             daran_reply_u64(drive, values[i].u64);
+            break;
+        case DARAN_TYPE_S32:
+            if (values[i].s32 < 0) {
+                daran_reply_text(drive, "-", 1);
+            }
+            /* the magnitude of INT32_MIN is 2^31: negate in 64 bits */
+            daran_reply_u64(drive, (uint64_t)(values[i].s32 < 0 ? -(int64_t)values[i].s32
+                                                                 : (int64_t)values[i].s32));
             break;
         default:
             daran_reply_u64(drive, values[i].u32);
@@ -55,26 +63,45 @@ daran_result_t daran_cmd_i(daran_drive_t *drive, const daran_request_t *request)
     return daran_reply_properties(drive, props, 3);
 }
 
-static const char *const flag_names[] = {
-    "estop", "watchdog", "motor_overtemp", "fet_overtemp", "undervoltage", "nvm_corrupt",
+/* The error registers `e` answers, in the order and with the names the
+ * vendor's error decoder expects: "name: value", one line each. */
+static const daran_prop_t error_registers[] = {
+    DARAN_PROP_AXIS_ERROR,           DARAN_PROP_MOTOR_ERROR,          DARAN_PROP_ENCODER_ERROR,
+    DARAN_PROP_CONTROLLER_ERROR,     DARAN_PROP_FET_THERMISTOR_ERROR, DARAN_PROP_MOTOR_THERMISTOR_ERROR,
+    DARAN_PROP_CAN_ERROR,
 };
+static const char error_register_names[] =
+    "axis\0motor\0encoder\0controller\0fet_thermistor\0motor_thermistor\0can";
+#define ERROR_REGISTER_COUNT (sizeof error_registers / sizeof error_registers[0])
 
 daran_result_t daran_cmd_e(daran_drive_t *drive, const daran_request_t *request)
 {
-    daran_value_t flags;
+    /* Every register is read before the first line goes out: a failing read
+     * answers one error line, never half a report. A register the port left
+     * out of its table reads as 0. */
+    uint32_t values[ERROR_REGISTER_COUNT];
     (void)request;
-    daran_result_t result = daran_get(drive, DARAN_PROP_AXIS_ERROR, &flags);
-    if (result != DARAN_OK) {
-        return result;
-    }
-    daran_reply_begin(drive);
-    daran_reply_u64(drive, flags.u32);
-    for (uint32_t bit = 0; bit < sizeof flag_names / sizeof flag_names[0]; bit++) {
-        if (((flags.u32 >> bit) & 1u) != 0u) {
-            daran_reply_space(drive);
-            daran_reply_cstr(drive, flag_names[bit]);
+    for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
+        daran_value_t value;
+        daran_result_t result = daran_get(drive, error_registers[i], &value);
+        if (result == DARAN_ERR_INVALID_PROPERTY) {
+            value.u32 = 0;
+        } else if (result != DARAN_OK) {
+            return result;
         }
+        values[i] = value.u32;
     }
-    daran_reply_end(drive);
+    const char *name = error_register_names;
+    for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
+        daran_reply_begin(drive);
+        daran_reply_cstr(drive, name);
+        daran_reply_text(drive, ": ", 2);
+        daran_reply_u64(drive, values[i]);
+        daran_reply_end(drive);
+        while (*name != '\0') {
+            name++;
+        }
+        name++;
+    }
     return DARAN_OK;
 }

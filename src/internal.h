@@ -63,15 +63,14 @@ typedef struct daran_command {
 typedef enum daran_scope { DARAN_SCOPE_SYSTEM, DARAN_SCOPE_AXIS } daran_scope_t;
 typedef enum daran_access { DARAN_ACCESS_RO, DARAN_ACCESS_RW } daran_access_t;
 
-/* One row of the compiled property table, one byte: what `r` and `w` need
- * to know (access, type, range). Paths are found through
- * src/property_index.h; the unit is documentation and stays in
- * DARAN_PROPERTY_LIST. */
-typedef uint8_t daran_property_t;
-#define DARAN_PROPERTY_ROW(access, type, range) (uint8_t)((access) | (type) << 1 | (range) << 3)
-#define DARAN_PROPERTY_ACCESS(row) ((daran_access_t)((row) & 1u))
-#define DARAN_PROPERTY_TYPE(row) ((daran_prop_type_t)(((row) >> 1) & 3u))
-#define DARAN_PROPERTY_RANGE(row) ((daran_range_t)((row) >> 3))
+/* One property's attributes in 16 bits: type (3), access (1), scope (1),
+ * range (5), unit number (6; 0 = none). Made by tools/gen_property_index.py. */
+typedef uint16_t daran_property_t;
+#define DARAN_PROPERTY_TYPE(row) ((daran_prop_type_t)((row) & 7u))
+#define DARAN_PROPERTY_ACCESS(row) ((daran_access_t)(((row) >> 3) & 1u))
+#define DARAN_PROPERTY_SCOPE(row) ((daran_scope_t)(((row) >> 4) & 1u))
+#define DARAN_PROPERTY_RANGE(row) ((daran_range_t)(((row) >> 5) & 31u))
+#define DARAN_PROPERTY_UNIT(row) ((unsigned)((row) >> 10))
 
 /* A framed line and what the framer learnt of it on the way in, so later
  * stages need not scan it again. */
@@ -110,7 +109,7 @@ const daran_command_t *daran_find_command(const daran_field_t *word);
 daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *request);
 
 /* property_table.c */
-extern const daran_property_t daran_properties[DARAN_PROP_COUNT];
+daran_property_t daran_property_row(daran_prop_t prop);
 /* DARAN_OK with *prop set, or DARAN_ERR_INVALID_PROPERTY. */
 daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t len,
                                    daran_prop_t *prop);

@@ -1,132 +1,222 @@
 #!/usr/bin/env python3
-"""Generate src/property_index.h from DARAN_PROPERTY_LIST in include/daran_properties.h.
+"""Generate the core's property index from DARAN_PROPERTY_LIST.
 
-The core finds a property path without storing whole paths: every path is a
-few dot-separated segments ("output_shaft" "pos_setpoint"), each segment is
-stored once in a sorted dictionary, and a path is the 32-bit key made of its
-segment numbers (6 bits each) and its scope. Lookup = binary search of each
-segment, then of the key, whose index is the property. Exact: a path matches only if every segment does.
+Run by the build (src/CMakeLists.txt), never committed: the list in
+include/daran_properties.h is the one source of truth, and a build may leave
+rows out (--omit) without editing it.
 
-Usage: gen_property_index.py [--check]   (--check: exit 1 if the file is stale)
+What it writes, for src/property_table.c:
+  - every dot-separated path segment once ("output_shaft", "pos_setpoint"),
+    plain bytes, with its end offset: a path is at most 3 segment numbers;
+  - per property: its segment numbers and one 16-bit attribute word (type,
+    access, scope, range, unit), so `r`, `w` and discovery read one row;
+  - a perfect hash of the paths (hash-and-displace): one FNV-1a pass over the
+    path's bytes picks a bucket, the bucket's displacement picks the slot,
+    the slot names the only property the path can be, and one comparison of
+    its segments decides. O(path length), independent of the row count.
+
+Usage: gen_property_index.py --list include/daran_properties.h --out FILE
+                             [--omit ID,ID,...] [--stats]
 """
-import os
+import argparse
 import re
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-LIST = os.path.join(ROOT, "include", "daran_properties.h")
-OUT = os.path.join(ROOT, "src", "property_index.h")
-
-SEGMENT_BITS = 6
-MAX_SEGMENTS = 3  # 1 + 3 * 6 = 19 bits: a key is stored in 3 bytes
-# Segment text is packed 5 bits a character: code = index in this alphabet.
-ALPHABET = "abcdefghijklmnopqrstuvwxyz_I"
+FNV_PRIME = 16777619
+MASK32 = 0xFFFFFFFF
+MAX_SEGMENTS = 3
+ROW_RE = re.compile(r'X\(\s*(\w+)\s*,\s*"([^"]*)"\s*,\s*(SYSTEM|AXIS)\s*,\s*(\w+)\s*,\s*(RO|RW)\s*,\s*(\w+)\s*,\s*"([^"]*)"\s*\)')
 
 
-def read_properties():
-    text = open(LIST, encoding="ascii").read()
-    rows = re.findall(r'X\((\w+),\s*"([^"]+)",\s*(SYSTEM|AXIS),', text)
+def read_rows(path):
+    text = open(path, encoding="ascii").read()
+    start = text.find("#define DARAN_PROPERTY_LIST(X)")
+    if start < 0:
+        sys.exit("gen_property_index: no DARAN_PROPERTY_LIST in " + path)
+    end = text.find("\n\n", start)
+    rows = ROW_RE.findall(text[start:end])
     if not rows:
-        sys.exit("gen_property_index: no X(...) rows found in " + LIST)
+        sys.exit("gen_property_index: no X(...) rows in " + path)
     return rows
 
 
-def generate():
-    rows = read_properties()
-    segments = sorted({seg for _, path, _ in rows for seg in path.split(".")}, key=lambda s: s.encode())
-    if len(segments) >= (1 << SEGMENT_BITS):
-        sys.exit("gen_property_index: too many segments for %d bits" % SEGMENT_BITS)
-    number = {seg: i + 1 for i, seg in enumerate(segments)}  # 0 = no segment
+def fnv(seed, scope, data):
+    h = (seed + scope) & MASK32
+    for byte in data:
+        h = ((h ^ byte) * FNV_PRIME) & MASK32
+    return h
+
+
+def slot_of(h, displacement, slots):
+    # Mirrors property_table.c: the low half of the hash is where the key
+    # starts, the high half (odd) its stride, so each displacement moves the
+    # keys of one bucket by different amounts.
+    x = (h + displacement * ((h >> 16) | 1)) & 0xFFFF
+    return (x * slots) >> 16
+
+
+def build_hash(keys):
+    """keys: list of (scope, bytes). Returns seed, bucket bits, displacements, slot table."""
+    n = len(keys)
+    slots = max(4, n + n // 4)
+    bucket_bits = max(1, (max(1, n // 3)).bit_length())
+    buckets = 1 << bucket_bits
+    for seed in range(1, 4096):
+        hashes = [fnv(seed, scope, data) for scope, data in keys]
+        groups = [[] for _ in range(buckets)]
+        for index, h in enumerate(hashes):
+            groups[h >> (32 - bucket_bits)].append(index)
+        order = sorted(range(buckets), key=lambda b: -len(groups[b]))
+        taken = [None] * slots
+        displacement = [0] * buckets
+        ok = True
+        for b in order:
+            members = groups[b]
+            if not members:
+                continue
+            for d in range(256):
+                wanted = [slot_of(hashes[i], d, slots) for i in members]
+                if len(set(wanted)) == len(wanted) and all(taken[s] is None for s in wanted):
+                    for i, s in zip(members, wanted):
+                        taken[s] = i
+                    displacement[b] = d
+                    break
+            else:
+                ok = False
+                break
+        if ok:
+            return seed, bucket_bits, displacement, taken, slots
+    sys.exit("gen_property_index: no perfect hash found")
+
+
+def c_string(data):
+    return '"' + data.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def generate(rows, omit):
+    ids = [r[0] for r in rows]
+    unknown = sorted(set(omit) - set(ids))
+    if unknown:
+        sys.exit("gen_property_index: --omit names unknown properties: " + " ".join(unknown))
+    if len(set(ids)) != len(ids):
+        sys.exit("gen_property_index: a property id appears twice")
+    kept = [i for i, r in enumerate(rows) if r[0] not in omit]
+    seen = set()
+    for i in kept:
+        key = (rows[i][2], rows[i][1])
+        if key in seen:
+            sys.exit("gen_property_index: path %s appears twice" % rows[i][1])
+        seen.add(key)
+
+    segments = sorted({seg for i in kept for seg in rows[i][1].split(".")}, key=lambda s: s.encode())
+    if len(segments) > 255:
+        sys.exit("gen_property_index: more than 255 distinct segments")
+    number = {seg: k + 1 for k, seg in enumerate(segments)}
+    units = sorted({r[6] for r in rows} - {""})
+    if len(units) > 63:
+        sys.exit("gen_property_index: more than 63 distinct units")
+    unit_number = {u: k + 1 for k, u in enumerate(units)}
+    unit_number[""] = 0
+
     keys = []
-    for ident, path, scope in rows:
-        parts = path.split(".")
-        if len(parts) > MAX_SEGMENTS:
-            sys.exit("gen_property_index: %s has more than %d segments" % (path, MAX_SEGMENTS))
-        key = 1 if scope == "AXIS" else 0
-        for part in parts:
-            key = (key << SEGMENT_BITS) | number[part]
-        key <<= SEGMENT_BITS * (MAX_SEGMENTS - len(parts))
-        keys.append((key, ident))
-    # '.' sorts below every character of a name, so ordering paths segment by
-    # segment is ordering them as strings: the keys come out in the list's own
-    # order, and the index of a key is the property's enum value.
-    if [k for k, _ in keys] != sorted(k for k, _ in keys):
-        sys.exit("gen_property_index: DARAN_PROPERTY_LIST is not sorted by (scope, path)")
+    for i in kept:
+        parts = rows[i][1].split(".")
+        if len(parts) > MAX_SEGMENTS or "" in parts:
+            sys.exit("gen_property_index: %s: 1..%d non-empty segments" % (rows[i][1], MAX_SEGMENTS))
+        keys.append((1 if rows[i][2] == "AXIS" else 0, rows[i][1].encode()))
+    seed, bucket_bits, displacement, taken, slots = build_hash(keys)
+    if len(rows) >= 0xFFFF:
+        sys.exit("gen_property_index: too many properties")
+    slot_type = "uint8_t" if len(rows) < 0xFF else "uint16_t"
+    empty = 0xFF if slot_type == "uint8_t" else 0xFFFF
 
     out = []
-    out.append("/* Generated by tools/gen_property_index.py from include/daran_properties.h.")
-    out.append(" * Do not edit: run the script (a test checks this file is up to date). */")
+    out.append("/* Generated by tools/gen_property_index.py from DARAN_PROPERTY_LIST at build time. */")
     out.append("#ifndef DARAN_PROPERTY_INDEX_H")
     out.append("#define DARAN_PROPERTY_INDEX_H")
     out.append("")
-    out.append("#define DARAN_SEGMENT_BITS %du" % SEGMENT_BITS)
-    out.append("#define DARAN_MAX_SEGMENTS %du" % MAX_SEGMENTS)
+    out.append("#define DARAN_INDEX_PROPERTIES %du /* rows with a path in this build */" % len(kept))
     out.append("#define DARAN_SEGMENT_COUNT %du" % len(segments))
-    out.append("#define DARAN_KEY_COUNT %du" % len(keys))
+    out.append("#define DARAN_HASH_SEED 0x%08xu" % seed)
+    out.append("#define DARAN_HASH_BUCKET_BITS %du" % bucket_bits)
+    out.append("#define DARAN_HASH_SLOTS %du" % slots)
+    out.append("#define DARAN_HASH_EMPTY 0x%xu" % empty)
+    out.append("typedef %s daran_hash_slot_t;" % slot_type)
     out.append("")
+    out.append("/* Every segment once, sorted, without terminators: */")
     text = "".join(segments)
-    for ch in text:
-        if ch not in ALPHABET:
-            sys.exit("gen_property_index: %r is not in the 5-bit alphabet" % ch)
-    bits = 0
-    nbits = 0
-    packed = []
-    for ch in text:
-        bits |= ALPHABET.index(ch) << nbits
-        nbits += 5
-        while nbits >= 8:
-            packed.append(bits & 0xFF)
-            bits >>= 8
-            nbits -= 8
-    packed.append(bits & 0xFF)  # the tail, and one spare byte so a 16-bit read never overruns
-    packed.append(0)
-    out.append("/* The 5-bit alphabet of segment_text: code n is DARAN_SEGMENT_ALPHABET[n]. */")
-    out.append('#define DARAN_SEGMENT_ALPHABET "%s"' % ALPHABET)
-    out.append("")
-    out.append("/* Every segment once, sorted by bytes, concatenated without terminators, 5")
-    out.append(" * bits a character, least significant bits first: */")
-    for i in range(0, len(segments), 6):
-        out.append("/*   " + " ".join(segments[i:i + 6]) + " */")
-    out.append("static const uint8_t segment_text[%d] = {" % len(packed))
-    for i in range(0, len(packed), 16):
-        out.append("    " + ", ".join("0x%02x" % b for b in packed[i:i + 16]) + ",")
-    out.append("};")
+    out.append("static const char segment_text[%d] =" % len(text))
+    for k in range(0, len(segments), 6):
+        out.append("    " + c_string("".join(segments[k:k + 6])))
+    out[-1] += ";"
     out.append("")
     out.append("/* Where segment n (1-based) ends in segment_text; it starts where n-1 ends. */")
-    ends, pos = [], 0
+    ends = []
+    pos = 0
     for seg in segments:
         pos += len(seg)
         ends.append(pos)
     out.append("static const uint16_t segment_end[DARAN_SEGMENT_COUNT] = {")
-    for i in range(0, len(ends), 10):
-        out.append("    " + ", ".join("%d" % e for e in ends[i:i + 10]) + ",")
+    for k in range(0, len(ends), 12):
+        out.append("    " + ", ".join(str(e) for e in ends[k:k + 12]) + ",")
     out.append("};")
     out.append("")
-    out.append("/* Path keys, ascending, 3 bytes each, most significant first: scope bit,")
-    out.append(" * then 6 bits per segment number. Key i")
-    out.append(" * is the path of property i (the list is sorted the same way). */")
-    out.append("static const uint8_t property_key[DARAN_KEY_COUNT * 3u] = {")
-    for key, ident in keys:
-        assert key < (1 << 24)
-        out.append("    0x%02x, 0x%02x, 0x%02x, /* %s */" % (key >> 16, (key >> 8) & 0xFF, key & 0xFF, ident))
+    out.append("/* Segment numbers of each property's path (0 = none; all 0 = left out of this build). */")
+    out.append("static const uint8_t property_segments[DARAN_PROP_COUNT][3] = {")
+    for i, r in enumerate(rows):
+        segs = [number[s] for s in r[1].split(".")] if i in kept else []
+        segs += [0] * (3 - len(segs))
+        out.append("    {%d, %d, %d}, /* %s%s */" % (segs[0], segs[1], segs[2], r[0], "" if i in kept else " (omitted)"))
+    out.append("};")
+    out.append("")
+    out.append("/* type, access, scope, range, unit of each property. */")
+    out.append("static const uint16_t property_attr[DARAN_PROP_COUNT] = {")
+    for r in rows:
+        out.append("    DARAN_ATTR(DARAN_TYPE_%s, DARAN_ACCESS_%s, DARAN_SCOPE_%s, DARAN_RANGE_%s, %du)," % (
+            r[3], r[4], r[2], r[5], unit_number[r[6]]))
+    out.append("};")
+    out.append("")
+    out.append("/* Units named by the attribute's unit number (1-based), NUL-separated. */")
+    out.append("#define DARAN_UNIT_TEXT \\")
+    out.append("    " + " ".join(c_string(u)[:-1] + '\\0"' for u in units))
+    out.append("")
+    out.append("static const uint8_t hash_displacement[1u << DARAN_HASH_BUCKET_BITS] = {")
+    for k in range(0, len(displacement), 16):
+        out.append("    " + ", ".join(str(d) for d in displacement[k:k + 16]) + ",")
+    out.append("};")
+    out.append("")
+    out.append("/* The property each slot holds, DARAN_HASH_EMPTY for none. */")
+    out.append("static const daran_hash_slot_t hash_slot[DARAN_HASH_SLOTS] = {")
+    cells = [str(kept[t]) if t is not None else "DARAN_HASH_EMPTY" for t in taken]
+    for k in range(0, len(cells), 12):
+        out.append("    " + ", ".join(cells[k:k + 12]) + ",")
     out.append("};")
     out.append("")
     out.append("#endif /* DARAN_PROPERTY_INDEX_H */")
-    return "\n".join(out) + "\n"
+    stats = {"rows": len(rows), "kept": len(kept), "segments": len(segments), "text": len(text),
+             "slots": slots, "buckets": 1 << bucket_bits, "seed": seed}
+    return "\n".join(out) + "\n", stats
 
 
 def main():
-    text = generate()
-    if len(sys.argv) > 1 and sys.argv[1] == "--check":
-        current = open(OUT, encoding="ascii").read() if os.path.exists(OUT) else ""
-        if current != text:
-            print("src/property_index.h is stale: run tools/gen_property_index.py")
-            return 1
-        print("src/property_index.h is up to date")
-        return 0
-    open(OUT, "w", encoding="ascii").write(text)
-    return 0
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--list", required=True, help="header with DARAN_PROPERTY_LIST")
+    parser.add_argument("--out", required=True, help="header to write")
+    parser.add_argument("--omit", default="", help="property ids to leave out, comma or semicolon separated")
+    parser.add_argument("--stats", action="store_true", help="print table sizes")
+    args = parser.parse_args()
+    omit = {x for x in re.split(r"[,;\s]+", args.omit) if x}
+    text, stats = generate(read_rows(args.list), omit)
+    try:
+        old = open(args.out, encoding="ascii").read()
+    except OSError:
+        old = None
+    if old != text:
+        with open(args.out, "w", encoding="ascii") as f:
+            f.write(text)
+    if args.stats:
+        print(" ".join("%s=%s" % kv for kv in stats.items()))
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()
