@@ -12,7 +12,8 @@
  *   !t N            run N control ticks (the driver rounds SECONDS x rate
  *                   as daran-sim does)
  *   !p ID           power-cycle when ID is 0 or the drive's id
- *   !f ID KIND      fault: o overtemp, u undervoltage, n nvm-corrupt
+ *   !f ID KIND      fault: o overtemp, u undervoltage, s stall, v overspeed,
+ *                   n nvm-corrupt
  *   !l ID BITS      external load torque, float32 bits in hex
  *   !x              finish: answer nothing more and exit QEMU (status 0)
  *
@@ -128,6 +129,10 @@ static void run_directive(const char *p, const char *end)
                 daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_OVERTEMP);
             } else if (*p == 'u') {
                 daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_UNDERVOLTAGE);
+            } else if (*p == 's') {
+                daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_STALL);
+            } else if (*p == 'v') {
+                daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_OVERSPEED);
             } else if (*p == 'n') {
                 (void)daran_sim_drive_corrupt_nvm(&daran_fw_plant);
             }

@@ -17,6 +17,14 @@ static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
     case DARAN_PROP_SERIAL_NUMBER:
         out->u64 = d->serial_number;
         return DARAN_OK;
+    case DARAN_PROP_SERIAL_NUMBER_L:
+        out->u64 = 0u;
+        out->u32 = (uint32_t)(d->serial_number & 0xFFFFFFFFu);
+        return DARAN_OK;
+    case DARAN_PROP_SERIAL_NUMBER_H:
+        out->u64 = 0u;
+        out->u32 = (uint32_t)(d->serial_number >> 32);
+        return DARAN_OK;
     default:
         return daran_sim_model_get(&d->model, prop, out);
     }
@@ -86,7 +94,8 @@ void daran_sim_drive_power_on(daran_sim_drive_t *d)
     }
     daran_sim_model_boot(&d->model);
     if (d->nvm_status == DARAN_SIM_NVM_DAMAGED) {
-        daran_sim_model_trip(&d->model, DARAN_FLAG_NVM_CORRUPT);
+        /* a warning: the drive runs on defaults and moves */
+        d->model.config_warnings |= DARAN_WARNING_NVM_CORRUPT;
     }
 }
 

@@ -40,7 +40,8 @@ void daran_sim_drive_init(daran_sim_drive_t *d, uint32_t index, uint32_t tick_hz
 void daran_sim_drive_set_storage(daran_sim_drive_t *d, const daran_sim_storage_t *st);
 
 /* Power on (or reboot): load the stored config or the defaults, raise
- * DARAN_FLAG_NVM_CORRUPT when the store was damaged, hold position in closed
+ * DARAN_WARNING_NVM_CORRUPT in axis0.config_warnings when the store was
+ * damaged (never an error: motion is not blocked), hold position in closed
  * loop. The shaft angle and temperatures are physical and are kept. */
 void daran_sim_drive_power_on(daran_sim_drive_t *d);
 

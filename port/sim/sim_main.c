@@ -65,11 +65,25 @@ static const char usage_text[] =
     "  !advance SECONDS   run the control loop for SECONDS (rounded to ticks)\n"
     "  !power-cycle [ID]  power the drive off and on (fresh protocol instance,\n"
     "                     config from its non-volatile memory); default 0\n"
-    "  !fault ID KIND     overtemp: temperatures jump 5 degC above their upper\n"
-    "                     limits (enabled thermistors trip at the next tick);\n"
-    "                     undervoltage: the bus sags to 8 V for 0.1 s (trip at\n"
-    "                     10 V); nvm-corrupt: the stored config is damaged, found\n"
-    "                     at the next boot (defaults, warning flag nvm_corrupt)\n"
+    "  !fault ID KIND     inject a fault; KIND is one of\n"
+    "                     overtemp: temperatures jump 5 degC above their upper\n"
+    "                       limits; enabled thermistors trip at the next tick\n"
+    "                       (idle, axis0.error 0x40000, thermistor error 1)\n"
+    "                     undervoltage: the bus sags for 0.1 s to 2 V below\n"
+    "                       config.dc_bus_undervoltage_trip_level (8 V: to 6 V);\n"
+    "                       trips at the next tick (idle, axis0.error 0x2)\n"
+    "                     stall: the stall limiter trips at the next tick (idle,\n"
+    "                       motor.error 0x10000, axis0.error 0x40), whether or\n"
+    "                       not config.extra_setting.enable_stall_limit is on\n"
+    "                     overspeed: the shaft is thrown to 1.5 x vel_limit x\n"
+    "                       vel_limit_tolerance; with controller.config.\n"
+    "                       enable_overspeed_error 1 (default 0) the next tick\n"
+    "                       trips (idle, controller.error 0x1, axis0.error\n"
+    "                       0x200); otherwise nothing trips and the controller\n"
+    "                       brakes the shaft back under its limits\n"
+    "                     nvm-corrupt: the stored config is damaged, found at\n"
+    "                       the next boot: defaults, and axis0.config_warnings\n"
+    "                       bit 0 (a warning: motion is not blocked)\n"
     "  !load ID NM        apply an external load torque of NM (-1000..1000) to the\n"
     "                     shaft; 0 removes it\n"
     "  !# TEXT            a comment, ignored\n"
@@ -337,6 +351,20 @@ static void collect(daran_sim_sink_fn sink, const char *what, size_t what_len)
 
 /* ---- directives ---- */
 
+/* `!fault ID KIND`: the model's injections, and the NVM's. */
+static const struct {
+    const char *name;
+    daran_sim_fault_t kind;
+    bool nvm;
+} faults[] = {
+    {"overtemp", DARAN_SIM_FAULT_OVERTEMP, false},
+    {"undervoltage", DARAN_SIM_FAULT_UNDERVOLTAGE, false},
+    {"stall", DARAN_SIM_FAULT_STALL, false},
+    {"overspeed", DARAN_SIM_FAULT_OVERSPEED, false},
+    {"nvm-corrupt", DARAN_SIM_FAULT_OVERTEMP, true},
+};
+#define FAULT_NAMES "overtemp, undervoltage, stall, overspeed, nvm-corrupt"
+
 /* Indexes of the drives a directive's ID names; 0 when none. */
 static uint32_t select_drives(const char *text, uint32_t out[DARAN_SIM_MAX_DRIVES])
 {
@@ -407,22 +435,25 @@ static void directive(char *line)
             daran_sim_bus_power_cycle(&app.bus, sel[i]);
         }
     } else if (strcmp(argv[0], "fault") == 0) {
+        size_t k;
         if (argc != 3) {
-            complain("usage: !fault ID overtemp|undervoltage|nvm-corrupt");
+            complain("usage: !fault ID %s", FAULT_NAMES);
             return;
         }
-        if (strcmp(argv[2], "overtemp") != 0 && strcmp(argv[2], "undervoltage") != 0 &&
-            strcmp(argv[2], "nvm-corrupt") != 0) {
-            complain("unknown fault '%s' (overtemp, undervoltage, nvm-corrupt)", argv[2]);
+        for (k = 0; k < sizeof faults / sizeof faults[0]; k++) {
+            if (strcmp(argv[2], faults[k].name) == 0) {
+                break;
+            }
+        }
+        if (k == sizeof faults / sizeof faults[0]) {
+            complain("unknown fault '%s' (%s)", argv[2], FAULT_NAMES);
             return;
         }
         n = select_drives(argv[1], sel);
         for (i = 0; i < n; i++) {
             daran_sim_drive_t *d = &app.bus.node[sel[i]].sim;
-            if (strcmp(argv[2], "overtemp") == 0) {
-                daran_sim_model_fault(&d->model, DARAN_SIM_FAULT_OVERTEMP);
-            } else if (strcmp(argv[2], "undervoltage") == 0) {
-                daran_sim_model_fault(&d->model, DARAN_SIM_FAULT_UNDERVOLTAGE);
+            if (!faults[k].nvm) {
+                daran_sim_model_fault(&d->model, faults[k].kind);
             } else if (!daran_sim_drive_corrupt_nvm(d)) {
                 complain("drive %u: its storage failed", daran_sim_drive_id(d));
             }

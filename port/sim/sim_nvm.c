@@ -6,8 +6,9 @@
  *   6  length   u16, payload bytes
  *   8  sequence u32, higher (mod 2^32) is newer
  *  12  crc      CRC-32 of bytes 4..11 and the payload
- *  16  payload  every configuration property (4 bytes each, in property
- *               order), then the zero offset
+ *  16  payload  every configuration property (daran_sim_is_config_prop:
+ *               its 32 bits, whatever its type, in property order), then
+ *               the zero offset
  * A save first clears the target slot's magic, then writes header and
  * payload, then the magic: until that last byte lands the slot is not
  * committed and the other slot still holds the previous image. A damaged
@@ -103,18 +104,6 @@ static float bits_f32(uint32_t u)
     return f;
 }
 
-#define DARAN_SIM_IS_F32_(id, path, scope, type, access, range, unit) \
-    (uint8_t)(DARAN_TYPE_##type == DARAN_TYPE_F32),
-static const uint8_t prop_is_f32[DARAN_PROP_COUNT] = {
-    DARAN_PROPERTY_LIST(DARAN_SIM_IS_F32_)
-};
-#undef DARAN_SIM_IS_F32_
-
-static bool is_f32_prop(daran_prop_t prop)
-{
-    return prop_is_f32[prop] != 0u;
-}
-
 static uint32_t payload_size(void)
 {
     uint32_t n = 4u; /* zero offset */
@@ -170,18 +159,13 @@ static bool unpack(const uint8_t *payload, daran_sim_model_t *m)
         if (!daran_sim_is_config_prop((daran_prop_t)p)) {
             continue;
         }
-        if (is_f32_prop((daran_prop_t)p)) {
-            cfg[p].f32 = bits_f32(get_u32(payload + off));
-            if (!isfinite(cfg[p].f32)) {
-                return false;
-            }
-        } else {
-            cfg[p].u32 = get_u32(payload + off);
-        }
+        /* f32, u32, s32 and bool all travel as their 32 bits */
+        cfg[p].u64 = 0u;
+        cfg[p].u32 = get_u32(payload + off);
         off += 4u;
     }
     zero = bits_f32(get_u32(payload + off));
-    if (!isfinite(zero)) {
+    if (!isfinite(zero) || !daran_sim_model_config_ok(cfg)) {
         return false;
     }
     memcpy(m->cfg, cfg, sizeof cfg);
@@ -256,8 +240,7 @@ bool daran_sim_nvm_save(const daran_sim_storage_t *st, const daran_sim_model_t *
     put_u32(slot + 8, newest >= 0 ? seq + 1u : 1u);
     for (p = 0; p < (int)DARAN_PROP_COUNT; p++) {
         if (daran_sim_is_config_prop((daran_prop_t)p)) {
-            put_u32(slot + off, is_f32_prop((daran_prop_t)p) ? f32_bits(m->cfg[p].f32)
-                                                               : m->cfg[p].u32);
+            put_u32(slot + off, m->cfg[p].u32);
             off += 4u;
         }
     }

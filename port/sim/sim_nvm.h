@@ -19,8 +19,9 @@ extern "C" {
 
 #define DARAN_SIM_NVM_SLOT_SIZE 512u
 #define DARAN_SIM_NVM_SIZE (2u * DARAN_SIM_NVM_SLOT_SIZE)
-/* Format of the image; an image of another version reads as corrupt. */
-#define DARAN_SIM_NVM_VERSION 1u
+/* Format of the image; an image of another version reads as corrupt.
+ * 2: the vendor's whole property table (protocol.md 10.2), s32 values. */
+#define DARAN_SIM_NVM_VERSION 2u
 
 /* Byte-addressed storage of DARAN_SIM_NVM_SIZE bytes; erased bytes read 0xFF.
  * A write returns false when it did not complete (power lost part-way: the

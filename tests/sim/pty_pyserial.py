@@ -86,7 +86,7 @@ def main():
         sim.stdin.write(b"!fault 2 overtemp\n")
         sim.stdin.flush()
         time.sleep(0.2)
-        if ask("e 2")[:1] != ["12"]:
+        if ask("r axis2.error") != ["262144"]:  # DARAN_FLAG_OVERTEMP
             failures.append("fault injected on stdin not seen")
         port.close()
         # a client may reopen the port

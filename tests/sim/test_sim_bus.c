@@ -78,16 +78,16 @@ static void test_broadcast_read_is_answered_by_every_drive_in_id_order(void **st
 {
     (void)state;
     assert_int_equal(say("r axis0.config.can_node_id "), 3u);
-    assert_string_equal(out, "1\n2\n3\n");
+    assert_string_equal(out, "1\r\n2\r\n3\r\n");
     /* drive 1 becomes id 9: it now answers last */
     assert_int_equal(say("w axis1.config.can_node_id 9"), 0u);
     assert_int_equal(say("r axis0.config.can_node_id"), 3u);
-    assert_string_equal(out, "2\n3\n9\n");
+    assert_string_equal(out, "2\r\n3\r\n9\r\n");
     assert_int_equal(order[0], 2u);
     assert_int_equal(order[2], 9u);
     /* addressed lines: one drive answers */
     assert_int_equal(say("f 9"), 1u);
-    assert_string_equal(out, "0 0\n");
+    assert_string_equal(out, "0 0\r\n");
     assert_int_equal(say("f 1"), 0u);
 }
 
@@ -156,17 +156,18 @@ static void test_estop_recovery_sequence(void **state)
     assert_int_equal(say("st 1"), 0u);
     assert_int_equal(model(0)->state, DARAN_STATE_IDLE);
     assert_int_equal(say("e 1"), 1u);
-    assert_string_equal(out, "1 estop\n");
+    assert_string_equal(out, "axis: 16384\r\nmotor: 0\r\nencoder: 0\r\ncontroller: 0\r\n"
+                             "fet_thermistor: 0\r\nmotor_thermistor: 0\r\ncan: 0\r\n");
     assert_int_equal(say("q 1 10"), 1u);
-    assert_string_equal(out, "error: estop active\n");
+    assert_string_equal(out, "error: estop active\r\n");
     assert_int_equal(say("w axis1.requested_state 8"), 1u);
-    assert_string_equal(out, "error: estop active\n");
+    assert_string_equal(out, "error: estop active\r\n");
     assert_int_equal(say("sc 1"), 0u);
     assert_int_equal(say("q 1 10"), 1u);
-    assert_string_equal(out, "error: motor idle\n");
+    assert_string_equal(out, "error: motor idle\r\n");
     assert_int_equal(say("w axis1.requested_state 8"), 0u);
     assert_int_equal(say("r axis1.current_state"), 1u);
-    assert_string_equal(out, "8\n");
+    assert_string_equal(out, "8\r\n");
     assert_int_equal(say("q 1 10 60 120"), 0u);
     run(2.0);
     assert_float_equal(daran_sim_model_pos_deg(model(0)), 10.0f, 0.05f);
@@ -179,10 +180,10 @@ static void test_long_line_is_fed_in_chunks_and_refused_once_per_drive(void **st
     memset(line, 'x', sizeof line - 1u);
     line[sizeof line - 1u] = '\0';
     assert_int_equal(say(line), 3u);
-    assert_string_equal(out, "error: line too long\nerror: line too long\nerror: line too long\n");
+    assert_string_equal(out, "error: line too long\r\nerror: line too long\r\nerror: line too long\r\n");
     /* the next line is fine */
     assert_int_equal(say("f 2"), 1u);
-    assert_string_equal(out, "0 0\n");
+    assert_string_equal(out, "0 0\r\n");
 }
 
 static void test_power_cycle_drops_the_preset_and_unsaved_settings(void **state)
@@ -192,9 +193,9 @@ static void test_power_cycle_drops_the_preset_and_unsaved_settings(void **state)
     assert_int_equal(say("ms 2 10 1 10"), 0u);
     daran_sim_bus_power_cycle(&bus, 1u);
     assert_int_equal(say("mq 2 0"), 1u);
-    assert_string_equal(out, "error: no preset\n");
+    assert_string_equal(out, "error: no preset\r\n");
     assert_int_equal(say("r axis2.controller.config.pos_gain"), 1u);
-    assert_string_equal(out, "20\n");
+    assert_string_equal(out, "20\r\n");
 }
 
 int main(void)

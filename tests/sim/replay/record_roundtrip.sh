@@ -114,7 +114,7 @@ if [ -e /dev/ptmx ]; then
         printf '10\nf 1\n' >&"$port"
         echo 'g 1' >&"$keep" # a line on stdin is received too
         if read -r -t 5 reply <&"$port"; then
-            [ "$reply" = "0 0" ] || fail "--pty: reply '$reply' to f 1"
+            [ "${reply%$'\r'}" = "0 0" ] || fail "--pty: reply '$reply' to f 1"
         else
             fail "--pty: no reply"
         fi
