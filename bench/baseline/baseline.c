@@ -3,8 +3,10 @@
  * The protocol parsed the ODrive way: sscanf splits the line, strtof reads
  * the numbers, strcmp walks the tables, snprintf("%f") formats the replies.
  * Validation order and HAL calls follow shared/spec/protocol.md section 8 and
- * docs/protocol.md, so the comparison measures the parsing style, not a
- * smaller job. */
+ * docs/protocol.md, section 10 included (zero rates, S-curve mq timing, the
+ * vendor's whole property table with s32 and the new ranges, the error
+ * registers and the seven-line `e`, CR LF line ends), so the comparison
+ * measures the parsing style, not a smaller job. */
 #include "baseline.h"
 
 #include <ctype.h>
@@ -15,6 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "daran_config.h"
+
 #define LINE_MAX_BYTES 128
 #define MOTOR_ID_MAX 63
 #define FIELDS_MAX 8
@@ -24,8 +28,12 @@
 
 enum { SCOPE_SYSTEM_ = 0, SCOPE_AXIS_ = 1 };
 enum { ACC_RO, ACC_RW };
-enum { T_F32, T_U32, T_U64, T_BOOL };
-enum { R_NONE, R_NON_NEGATIVE, R_POSITIVE, R_BOOL, R_NODE_ID, R_UART_BAUD, R_CAN_BAUD, R_AXIS_STATE };
+enum { T_F32, T_U32, T_S32, T_U64, T_BOOL };
+enum {
+    R_NONE, R_NON_NEGATIVE, R_POSITIVE, R_NON_POSITIVE, R_BOOL, R_ZERO, R_NODE_ID, R_UART_BAUD,
+    R_CAN_BAUD, R_CAN_PROTOCOL, R_AXIS_STATE, R_CONTROL_MODE, R_INPUT_MODE, R_TRAJ_MODE,
+    R_DIRECTION, R_MOTOR_TYPE, R_POLE_PAIRS
+};
 
 typedef struct bl_property {
     const char *name;
@@ -37,6 +45,7 @@ typedef struct bl_property {
 #define BL_AXIS SCOPE_AXIS_
 #define BL_F32 T_F32
 #define BL_U32 T_U32
+#define BL_S32 T_S32
 #define BL_U64 T_U64
 #define BL_BOOL T_BOOL
 #define BL_RO ACC_RO
@@ -44,15 +53,24 @@ typedef struct bl_property {
 #define BL_R_NONE R_NONE
 #define BL_R_NON_NEGATIVE R_NON_NEGATIVE
 #define BL_R_POSITIVE R_POSITIVE
+#define BL_R_NON_POSITIVE R_NON_POSITIVE
 #define BL_R_BOOL R_BOOL
+#define BL_R_ZERO R_ZERO
 #define BL_R_NODE_ID R_NODE_ID
 #define BL_R_UART_BAUD R_UART_BAUD
 #define BL_R_CAN_BAUD R_CAN_BAUD
+#define BL_R_CAN_PROTOCOL R_CAN_PROTOCOL
 #define BL_R_AXIS_STATE R_AXIS_STATE
+#define BL_R_CONTROL_MODE R_CONTROL_MODE
+#define BL_R_INPUT_MODE R_INPUT_MODE
+#define BL_R_TRAJ_MODE R_TRAJ_MODE
+#define BL_R_DIRECTION R_DIRECTION
+#define BL_R_MOTOR_TYPE R_MOTOR_TYPE
+#define BL_R_POLE_PAIRS R_POLE_PAIRS
 
 /* Same names as the library (the X-macro list is the protocol's property
- * list), but a plain array of C strings scanned front to back, as ODrive-style
- * endpoint tables are. */
+ * list: the vendor's whole table), but a plain array of C strings scanned
+ * front to back, as ODrive-style endpoint tables are. */
 static const bl_property_t properties[] = {
 #define BL_ROW(id, path, scope, type, access, range, unit) \
     {path, DARAN_PROP_##id, BL_##scope, BL_##type, BL_##access, BL_R_##range},
@@ -101,6 +119,11 @@ static void send_reply(baseline_t *b, int with_checksum)
         unsigned x = xor_bytes(b->reply, n) ^ ' ';
         n += (size_t)snprintf(b->reply + n, sizeof b->reply - n, " *%u", x);
     }
+#if DARAN_REPLY_CRLF
+    if (n + 2 < sizeof b->reply) {
+        b->reply[n++] = '\r';
+    }
+#endif
     if (n + 1 < sizeof b->reply) {
         b->reply[n++] = '\n';
     }
@@ -228,8 +251,8 @@ static daran_result_t motion_allowed(baseline_t *b)
     if (value.u32 & DARAN_FLAG_ESTOP) {
         return DARAN_ERR_ESTOP_ACTIVE;
     }
-    if (value.u32 & ~(uint32_t)DARAN_FLAG_WARNING_MASK) {
-        return DARAN_ERR_MOTOR_FAULT;
+    if (value.u32 != 0u) {
+        return DARAN_ERR_MOTOR_FAULT; /* any other bit of axis0.error blocks motion */
     }
     result = get(b, DARAN_PROP_CURRENT_STATE, &value);
     if (result != DARAN_OK) {
@@ -277,8 +300,12 @@ static daran_result_t cmd_t(baseline_t *b, const bl_command_t *cmd, char tok[][T
         result = parse_f32(tok[3], &ignored);
     }
     if (result == DARAN_OK && count > 4) {
-        result = parse_positive(tok[4], &move.rate);
-        move.given = DARAN_GIVEN_RATE;
+        result = parse_non_negative(tok[4], &move.rate);
+        if (move.rate == 0.0f) {
+            move.rate = 0.0f; /* bandwidth 0 (or -0): keep the current one */
+        } else {
+            move.given = DARAN_GIVEN_RATE;
+        }
     }
     return start_move(b, result, &move);
 }
@@ -297,8 +324,14 @@ static daran_result_t cmd_q(baseline_t *b, const bl_command_t *cmd, char tok[][T
         move.given |= DARAN_GIVEN_VEL;
     }
     if (result == DARAN_OK && count > 4) {
-        result = parse_positive(tok[4], &move.rate);
+        result = parse_non_negative(tok[4], &move.rate);
         move.given |= DARAN_GIVEN_RATE;
+        if (move.rate == 0.0f) {
+            /* acceleration 0: a step to the target, no cruise */
+            move.rate = 0.0f;
+            move.vel_rpm = 0.0f;
+            move.given &= (uint8_t)~DARAN_GIVEN_VEL;
+        }
     }
     return start_move(b, result, &move);
 }
@@ -326,8 +359,8 @@ static daran_result_t velocity_move(float vel, float param, uint32_t mode, daran
     move->vel_rpm = vel;
     if (mode == 2u) {
         move->kind = DARAN_MOVE_VELOCITY_RAMP;
-        move->rate = param;
-        return param > 0.0f ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+        move->rate = param == 0.0f ? 0.0f : param; /* 0 holds the setpoint */
+        return param >= 0.0f ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
     }
     move->kind = DARAN_MOVE_VELOCITY;
     move->torque_nm = param;
@@ -342,8 +375,8 @@ static daran_result_t torque_move(float torque, float param, uint32_t mode, dara
         return DARAN_OK;
     }
     move->kind = DARAN_MOVE_TORQUE_RAMP;
-    move->rate = param;
-    return param > 0.0f ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+    move->rate = param == 0.0f ? 0.0f : param; /* 0 holds the setpoint */
+    return param >= 0.0f ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
 }
 
 static daran_result_t cmd_v(baseline_t *b, const bl_command_t *cmd, char tok[][TOKEN_BYTES],
@@ -497,14 +530,16 @@ static daran_result_t cmd_mt(baseline_t *b, const bl_command_t *cmd, char tok[][
     }
     memset(&move, 0, sizeof move);
     move.kind = DARAN_MOVE_FILTERED_POSITION;
-    move.given = DARAN_GIVEN_RATE;
+    if (!(b->preset[2] >= 0.0f)) {
+        return DARAN_ERR_OUT_OF_RANGE;
+    }
+    if (b->preset[2] != 0.0f) { /* bandwidth 0: keep the current one */
+        move.given = DARAN_GIVEN_RATE;
+        move.rate = b->preset[2];
+    }
     result = start_target(b, rel, &base, &move.pos_deg);
     if (result != DARAN_OK) {
         return result;
-    }
-    move.rate = b->preset[2];
-    if (!(move.rate > 0.0f)) {
-        return DARAN_ERR_OUT_OF_RANGE;
     }
     return finish_start(b, &move);
 }
@@ -524,7 +559,7 @@ static daran_result_t cmd_mq(baseline_t *b, const bl_command_t *cmd, char tok[][
     }
     float t = b->preset[1];
     float acc = b->preset[2];
-    if (!(t > 0.0f) || !(acc > 0.0f)) {
+    if (!(t >= 0.0f) || !(acc >= 0.0f)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
     memset(&move, 0, sizeof move);
@@ -534,21 +569,35 @@ static daran_result_t cmd_mq(baseline_t *b, const bl_command_t *cmd, char tok[][
     if (result != DARAN_OK) {
         return result;
     }
-    /* Same plan as the spec: cruise v with v^2 - a t v + a d = 0 (deg, s). */
+    /* traj_mode 2: an S-curve, each ramp 2v/a long */
+    daran_value_t mode;
+    result = get(b, DARAN_PROP_TRAJ_MODE, &mode);
+    if (result != DARAN_OK && result != DARAN_ERR_INVALID_PROPERTY) {
+        return result;
+    }
+    float ramps = result == DARAN_OK && mode.u32 == 2u ? 8.0f : 4.0f;
+    /* Same plan as the spec: cruise v with (ramps/4) v^2 - a t v + a d = 0 (deg, s). */
     float d = fabsf(move.pos_deg - base);
     float a = acc * 6.0f;
+    if (d == 0.0f) {
+        move.given = 0; /* nothing to plan: the drive keeps its settings */
+        return finish_start(b, &move);
+    }
+    if (t == 0.0f || a == 0.0f) {
+        return DARAN_ERR_TRAJECTORY_INFEASIBLE;
+    }
     float at = a * t;
-    float disc = at * at - 4.0f * a * d;
+    float disc = at * at - ramps * a * d;
     if (!isfinite(disc)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
     if (disc >= 0.0f) {
-        float v = d > 0.0f ? 2.0f * a * d / (at + sqrtf(disc)) : at / 2.0f;
+        float v = 2.0f * a * d / (at + sqrtf(disc));
         move.vel_rpm = v / 6.0f;
         move.rate = a / 6.0f;
     } else if (-disc <= 1e-4f * at * at) {
         move.vel_rpm = 2.0f * d / t / 6.0f;
-        move.rate = 4.0f * d / (t * t) / 6.0f;
+        move.rate = ramps * d / (t * t) / 6.0f;
     } else {
         return DARAN_ERR_TRAJECTORY_INFEASIBLE;
     }
@@ -665,6 +714,9 @@ static void format_value(char *out, size_t size, int type, daran_value_t value)
     case T_U64:
         snprintf(out, size, "%llu", (unsigned long long)value.u64);
         break;
+    case T_S32:
+        snprintf(out, size, "%ld", (long)value.s32);
+        break;
     default:
         snprintf(out, size, "%lu", (unsigned long)value.u32);
         break;
@@ -693,8 +745,16 @@ static daran_result_t cmd_r(baseline_t *b, const bl_command_t *cmd, char tok[][T
 static int integer_in_range(int range, double value)
 {
     switch (range) {
+    case R_NON_NEGATIVE:
+        return value >= 0.0;
+    case R_POSITIVE:
+        return value > 0.0;
+    case R_NON_POSITIVE:
+        return value <= 0.0;
     case R_BOOL:
-        return value <= 1.0;
+        return value == 0.0 || value == 1.0;
+    case R_ZERO:
+        return value == 0.0;
     case R_NODE_ID:
         return value >= 1.0 && value <= MOTOR_ID_MAX;
     case R_UART_BAUD:
@@ -702,10 +762,23 @@ static int integer_in_range(int range, double value)
                value == 115200.0;
     case R_CAN_BAUD:
         return value == 125000.0 || value == 250000.0 || value == 500000.0 || value == 1000000.0;
+    case R_CAN_PROTOCOL:
+        return value == 0.0 || value == 1.0;
     case R_AXIS_STATE:
         return value == DARAN_STATE_IDLE || value == DARAN_STATE_CLOSED_LOOP;
-    case R_POSITIVE:
-        return value > 0.0;
+    case R_CONTROL_MODE:
+        return value >= 1.0 && value <= 3.0;
+    case R_INPUT_MODE:
+        return value == 1.0 || value == 2.0 || value == 3.0 || value == 5.0 || value == 6.0 ||
+               value == 9.0;
+    case R_TRAJ_MODE:
+        return value == 1.0 || value == 2.0;
+    case R_DIRECTION:
+        return value == -1.0 || value == 1.0;
+    case R_MOTOR_TYPE:
+        return value == 0.0 || value == 2.0 || value == 3.0;
+    case R_POLE_PAIRS:
+        return value >= 1.0 && value <= 128.0;
     default:
         return 1;
     }
@@ -728,15 +801,23 @@ static daran_result_t cmd_w(baseline_t *b, const bl_command_t *cmd, char tok[][T
     if (row->type == T_F32) {
         result = parse_f32(tok[2], &value.f32);
         if (result == DARAN_OK && ((row->range == R_POSITIVE && !(value.f32 > 0.0f)) ||
-                                   (row->range == R_NON_NEGATIVE && !(value.f32 >= 0.0f)))) {
+                                   (row->range == R_NON_NEGATIVE && !(value.f32 >= 0.0f)) ||
+                                   (row->range == R_NON_POSITIVE && !(value.f32 <= 0.0f)))) {
             result = DARAN_ERR_OUT_OF_RANGE;
         }
     } else {
         double integer;
         result = parse_integer(tok[2], &integer);
         if (result == DARAN_OK) {
-            if (integer < 0.0 || (row->type != T_U64 && integer > 4294967295.0) ||
-                !integer_in_range(row->range, integer)) {
+            if (row->type == T_S32) {
+                if (integer < -2147483648.0 || integer > 2147483647.0 ||
+                    !integer_in_range(row->range, integer)) {
+                    result = DARAN_ERR_OUT_OF_RANGE;
+                } else {
+                    value.s32 = (int32_t)integer;
+                }
+            } else if (integer < 0.0 || (row->type != T_U64 && integer > 4294967295.0) ||
+                       (row->type != T_U64 && !integer_in_range(row->range, integer))) {
                 result = DARAN_ERR_OUT_OF_RANGE;
             } else if (row->type == T_U64) {
                 value.u64 = (uint64_t)integer;
@@ -818,26 +899,38 @@ static daran_result_t cmd_i(baseline_t *b, const bl_command_t *cmd, char tok[][T
 static daran_result_t cmd_e(baseline_t *b, const bl_command_t *cmd, char tok[][TOKEN_BYTES],
                             int count, unsigned motor)
 {
-    static const char *const names[] = {"estop", "watchdog", "motor_overtemp", "fet_overtemp",
-                                        "undervoltage", "nvm_corrupt"};
-    daran_value_t flags;
-    char text[96];
+    /* The error registers, one line each, as the vendor's decoder reads them. */
+    static const struct {
+        const char *name;
+        daran_prop_t prop;
+    } registers[] = {
+        {"axis", DARAN_PROP_AXIS_ERROR},
+        {"motor", DARAN_PROP_MOTOR_ERROR},
+        {"encoder", DARAN_PROP_ENCODER_ERROR},
+        {"controller", DARAN_PROP_CONTROLLER_ERROR},
+        {"fet_thermistor", DARAN_PROP_FET_THERMISTOR_ERROR},
+        {"motor_thermistor", DARAN_PROP_MOTOR_THERMISTOR_ERROR},
+        {"can", DARAN_PROP_CAN_ERROR},
+    };
+    enum { REGISTERS = sizeof registers / sizeof registers[0] };
+    unsigned long values[REGISTERS];
     (void)cmd;
     (void)tok;
     (void)count;
     (void)motor;
-    daran_result_t result = get(b, DARAN_PROP_AXIS_ERROR, &flags);
-    if (result != DARAN_OK) {
-        return result;
-    }
-    snprintf(text, sizeof text, "%lu", (unsigned long)flags.u32);
-    for (unsigned bit = 0; bit < 6u; bit++) {
-        if ((flags.u32 >> bit) & 1u) {
-            strcat(text, " ");
-            strcat(text, names[bit]);
+    for (size_t i = 0; i < REGISTERS; i++) {
+        daran_value_t value;
+        daran_result_t result = get(b, registers[i].prop, &value);
+        if (result == DARAN_ERR_INVALID_PROPERTY) {
+            value.u32 = 0; /* a register the port does not have reads as 0 */
+        } else if (result != DARAN_OK) {
+            return result;
         }
+        values[i] = (unsigned long)value.u32;
     }
-    reply(b, "%s", text);
+    for (size_t i = 0; i < REGISTERS; i++) {
+        reply(b, "%s: %lu", registers[i].name, values[i]);
+    }
     return DARAN_OK;
 }
 

@@ -33,7 +33,12 @@ static void sink_write(void *ctx, const char *text, size_t len)
     sink_t *sink = ctx;
     sink->bytes += len;
     if (sink->trace != NULL) {
-        fprintf(sink->trace, "%lu reply %.*s\n", *sink->line, (int)(len > 0 ? len - 1 : 0), text);
+        /* the line without its end ("\n", or "\r\n" with DARAN_REPLY_CRLF) */
+        size_t shown = len > 0 && text[len - 1] == '\n' ? len - 1 : len;
+        if (shown > 0 && text[shown - 1] == '\r') {
+            shown--;
+        }
+        fprintf(sink->trace, "%lu reply %.*s\n", *sink->line, (int)shown, text);
     }
 }
 

@@ -25,6 +25,7 @@ void bench_hal_reset(bench_hal_state_t *state, FILE *trace)
     state->values[DARAN_PROP_WATCHDOG_TIMEOUT].f32 = 0.5f;
     state->values[DARAN_PROP_FET_TEMPERATURE].f32 = 41.5f;
     state->values[DARAN_PROP_MOTOR_TEMPERATURE].f32 = 38.25f;
+    state->values[DARAN_PROP_TRAJ_MODE].u32 = 1; /* trapezoids until a stream asks for S-curves */
 }
 
 static daran_result_t bench_get(void *ctx, daran_prop_t prop, daran_value_t *out)

@@ -119,18 +119,37 @@ def own_and_pulled(image, own):
     return parts[image].get(own, 0), pulled
 
 
-budget = 8192
+goal = 8192  # the first contract's goal: core flash <= 8 KiB
+# The budget CTest enforces (budget_core_flash), raised with the vendor's
+# whole property table (97424e3): read from where the cortex-m4 build sets it.
+budget = goal
+try:
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests",
+                           "target", "CMakeLists.txt")) as f:
+        m = re.search(r"set\(DARAN_BUDGET_FLASH (\d+)", f.read())
+        if m:
+            budget = int(m.group(1))
+except OSError:
+    pass
 core_own, core_pulled = own_and_pulled("daran", "core")
 base_own, base_pulled = own_and_pulled("baseline", "baseline")
 core_total = core_own + core_pulled
 nohelp_own, nohelp_pulled = own_and_pulled("daran-nohelp", "core-nohelp")
 print()
-print("**Goal: core flash <= %d bytes: %s.** The core's objects (src/) take %d bytes and pull "
+if budget != goal:
+    headline = ("**Core flash budget (CTest budget_core_flash) <= %d bytes: %s.** (The first "
+                "goal, <= %d bytes: %s.)" % (
+                    budget, "met" if core_total <= budget else
+                    "missed by %d bytes" % (core_total - budget), goal,
+                    "met" if core_total <= goal else "missed by %d bytes" % (core_total - goal)))
+else:
+    headline = "**Goal: core flash <= %d bytes: %s.**" % (
+        budget, "met" if core_total <= budget else "missed by %d bytes" % (core_total - budget))
+print(headline + " The core's objects (src/) take %d bytes and pull "
       "%d bytes from the libraries: %d in all (%s); the baseline's take %d and pull %d: %d in "
       "all, %.1fx the core. Without the help text (DARAN_ENABLE_HELP=0) the core is %d in all. "
       "Whole images over the empty one (trivial HAL and glue included): "
       "%d (daran), %d (daran, no help text), %d (baseline)." % (
-          budget, "met" if core_total <= budget else "missed by %d bytes" % (core_total - budget),
           core_own, core_pulled, core_total,
           "%d to spare" % (budget - core_total) if core_total <= budget else
           "%d over" % (core_total - budget),

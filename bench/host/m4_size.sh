@@ -13,7 +13,7 @@ out=${1:-build/bench/m4}
 mkdir -p "$out"
 cc=arm-none-eabi-gcc
 cpu="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
-cflags="$cpu -Os -std=c99 -ffunction-sections -fdata-sections -fno-math-errno -fno-tree-loop-distribute-patterns -Iinclude -Isrc -Ibench/baseline"
+cflags="$cpu -Os -std=c99 -ffunction-sections -fdata-sections -fno-math-errno -fno-tree-loop-distribute-patterns -Iinclude -Isrc -I$out/generated -Ibench/baseline"
 ldflags="$cpu --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections"
 core_sources=$(sed -n 's/^  \([a-z_0-9]*\.c\)$/src\/\1/p' src/CMakeLists.txt)
 
@@ -40,6 +40,10 @@ link() { # image extra-flags parts...
 }
 
 rm -rf "$out/obj"
+# The core's property index (perfect hash), generated as the core's build does.
+mkdir -p "$out/generated"
+python3 tools/gen_property_index.py --list include/daran_properties.h --omit "" \
+  --out "$out/generated/property_index.h"
 compile main-empty 0 bench/host/m4_main.c
 compile main-daran 1 bench/host/m4_main.c
 compile main-baseline 2 bench/host/m4_main.c

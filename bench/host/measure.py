@@ -247,6 +247,16 @@ def lookup_table(driver, out, md):
                   len(props), fmt(min(ours_all)), fmt(sum(ours_all) / len(ours_all)),
                   fmt(max(ours_all)), fmt(min(base_all)), fmt(sum(base_all) / len(base_all)),
                   fmt(max(base_all))))
+    old = os.path.join(ROOT, "bench", "host", "lookup-1a9450a.dat")
+    if os.path.exists(old):
+        rows = [l.split() for l in open(old) if l.strip() and not l.startswith("#")]
+        before = [int(r[1]) for r in rows]
+        md.append("")
+        md.append("Before the perfect hash (core of 1a9450a: %d rows, a packed segment index; "
+                  "bench/host/lookup-1a9450a.dat, the third line of the chart): min %s, mean %s, "
+                  "max %s instructions per lookup." % (
+                      len(before), fmt(min(before)), fmt(sum(before) / len(before)),
+                      fmt(max(before))))
 
 
 def length_table(driver, md):

@@ -48,7 +48,7 @@ nice -n 10 python3 bench/host/measure.py --driver "$driver" $clang_args --out "$
 echo "== charts"
 gnuplot -e "datafile='$results/families.dat'; outfile='docs/bench-host-instructions.png'" \
   bench/host/families.gp
-gnuplot -e "datafile='$results/lookup.dat'; outfile='docs/bench-host-lookup.png'" \
+gnuplot -e "datafile='$results/lookup.dat'; olddata='bench/host/lookup-1a9450a.dat'; outfile='docs/bench-host-lookup.png'" \
   bench/host/lookup.gp
 
 echo "== Cortex-M4 flash and RAM"

@@ -17,6 +17,10 @@ Streams (one request per line, no timestamps; lines are what a host sends):
   families/*.txt one command family per file, 1000 lines each, for the
                  per-family table (t, t_cs, q, p, v, c, d, ms_mq, r, w, f, g,
                  e, errors)
+  contract.txt   not measured: the edges of the contract (zero rates, S-curve
+                 mq, s32 and the integer ranges, error registers, `e`), for
+                 compare_traces.py only; written without the random generator,
+                 so the streams above stay byte for byte what they were
 In the three sessions a third of the lines carry a (correct) checksum.
 """
 import math
@@ -297,6 +301,75 @@ def family(g, name, count=1000):
     return out[:count]
 
 
+def contract_lines():
+    """Every line here is checked by compare_traces.py: both parsers must
+    make the same HAL calls and answer the same errors (protocol.md section
+    10). The bench HAL moves the setpoint to each move's target."""
+    lines = [
+        # zero rates (10.1)
+        "t 1 10 0 0", "t 1 11 0 -0", "t 1 12 0 -1", "t 1 13 5 25",
+        "q 1 20 30 0", "q 1 21 30 -0", "q 1 22 0 5", "q 1 23 -1 5", "q 1 24 30 -2", "q 1 25 30",
+        "v 1 10 0 2", "v 1 10 -0 2", "v 1 10 -1 2", "v 1 10 0 1", "v 1 10 2.5 2",
+        "c 1 1 0 6", "c 1 1 0 2", "c 1 1 -0.5 6", "c 1 1 -0.5 1",
+        "ms 1 30 5 0", "mt 1 0", "ms 1 31 5 -1", "mt 1 0", "ms 1 40 5 12", "mt 1 1",
+        "ms 1 30 5 10", "mt 1 0",
+        "ms 1 30 0 10", "mq 1 0", "ms 1 30 0 0", "mq 1 0", "ms 1 0 0 10", "mq 1 1",
+        "ms 1 30 0 10", "mq 1 1", "ms 1 45 2 0", "mq 1 0", "ms 1 45 -1 10", "mq 1 0",
+        "ms 1 45 2 -1", "mq 1 0", "ms 1 120 2 10", "mq 1 0", "ms 1 -100 1.5 40", "mq 0 0",
+        "t 1 0", "ms 1 9 0.7745966692414834 10", "mq 1 0", "ms 1 19 0.1 10", "mq 1 0",
+        "ms 1 10 0 0 2", "ms 1 10 0 2", "mv 1", "ms 1 10 -0 2", "mv 1", "ms 1 10 -3 2", "mv 1",
+        "ms 1 2 0 6", "mc 1", "ms 1 2 0 2", "mc 1", "ms 1 2 -1 6", "mc 1", "ms 1 2 1 7", "mc 1",
+        # S-curve timing (10.3)
+        "w axis1.trap_traj.config.traj_mode 2", "r axis1.trap_traj.config.traj_mode",
+        "t 1 0", "ms 1 90 3 20", "mq 1 0", "ms 1 100 0.8164965809277261 20", "mq 1 0",
+        "ms 1 110 0.5 20", "mq 1 0", "ms 1 10 0 20", "mq 1 1", "ms 1 -10 2 20", "mq 1 1",
+        "q 1 50 10 5",
+        "w axis1.trap_traj.config.traj_mode 1", "w axis1.trap_traj.config.traj_mode 3",
+        "w axis1.trap_traj.config.traj_mode 0",
+        # s32 (10.2)
+        "w axis1.motor.config.direction -1", "r axis1.motor.config.direction",
+        "w axis1.motor.config.direction 1", "w axis1.motor.config.direction 0",
+        "w axis1.motor.config.direction -1.0", "w axis1.motor.config.direction -2",
+        "w axis1.motor.config.direction --1", "w axis1.motor.config.direction -",
+        "w axis1.motor.config.direction +1", "w axis1.motor.config.direction -1.5",
+        "w axis1.motor.config.pole_pairs 7", "w axis1.motor.config.pole_pairs 0",
+        "w axis1.motor.config.pole_pairs 129", "w axis1.motor.config.pole_pairs 128",
+        "w axis1.motor.config.pole_pairs 1e2", "r axis1.motor.config.pole_pairs",
+        "w axis1.encoder.config.cpr 16384", "w axis1.encoder.config.cpr -5",
+        "w axis1.encoder.config.cpr 0", "w axis1.encoder.config.cpr 2147483647",
+        "w axis1.encoder.config.cpr 2147483648",
+        "w axis1.config.extra_setting.stored_turns_counts -2147483648",
+        "r axis1.config.extra_setting.stored_turns_counts",
+        "w axis1.config.extra_setting.stored_turns_counts -2147483649",
+        "w axis1.config.extra_setting.stored_turns_counts 2147483647",
+        "w axis1.config.extra_setting.stored_turns_counts -0",
+        "r axis1.encoder.turn_abs", "r axis1.encoder.pos_abs", "w axis1.encoder.pos_abs 5",
+        # integer ranges
+        "w axis1.controller.config.control_mode 3", "w axis1.controller.config.control_mode 4",
+        "w axis1.controller.config.control_mode 0", "w axis1.controller.config.input_mode 5",
+        "w axis1.controller.config.input_mode 4", "w axis1.controller.config.input_mode 9",
+        "w axis1.motor.config.motor_type 2", "w axis1.motor.config.motor_type 1",
+        "w can.config.protocol 1 1", "w can.config.protocol 2 1",
+        "w can.config.heartbeat_ms 4294967295 1", "w can.config.heartbeat_ms 4294967296 1",
+        "w can.config.heartbeat_ms -1 1", "w can.config.heartbeat_ms -0 1",
+        "w config.dc_max_negative_current -10 1", "w config.dc_max_negative_current 5 1",
+        "w config.dc_max_negative_current -0 1", "w axis1.config.enable_watchdog 2",
+        "w config.enable_uart 1 1", "w axis1.config.enable_step_dir 1",
+        "w axis1.output_shaft.vel_ramp_rate 0", "w axis1.output_shaft.vel_ramp_rate -1",
+        "w axis1.controller.config.input_filter_bandwidth 0",
+        "w axis1.output_shaft.trap_traj_accel_limit 0", "w axis1.output_shaft.trap_traj_vel_limit 0",
+        "r serial_number_l 1", "r serial_number_h 1", "w serial_number_l 5 1",
+        # error registers (10.4): writable with 0 only
+        "w axis1.error 0", "w axis1.error 1", "w axis1.motor.error 0", "w axis1.controller.error 5",
+        "w axis1.encoder.error 0", "w axis1.fet_thermistor.error 0",
+        "w axis1.motor_thermistor.error 0.0", "w can.error 0 1", "w can.error 1 1",
+        "w axis1.config_warnings 0", "r axis1.config_warnings", "r axis1.motor.error",
+        "e 1", "st 1", "e 1", "t 1 10", "w axis1.requested_state 8", "sc 1", "e 1", "t 1 10",
+        "w axis1.requested_state 8", "t 1 10", "e 0", "e 2",
+    ]
+    return lines + [with_checksum(l) for l in lines]
+
+
 FAMILIES = ["t", "t_cs", "q", "p", "v", "c", "d", "ms_mq", "r", "w", "f", "g", "e", "errors"]
 
 
@@ -317,6 +390,7 @@ def main():
     write(os.path.join(HERE, "bus.txt"), bus_session(g, 10000))
     for name in FAMILIES:
         write(os.path.join(HERE, "families", name + ".txt"), family(g, name))
+    write(os.path.join(HERE, "contract.txt"), contract_lines())
 
 
 if __name__ == "__main__":
