@@ -141,8 +141,9 @@ static void test_q_too_short_for_its_cruise_velocity_runs_a_triangle(void **stat
     assert_true(model.pos_sp == 45.0f);
 }
 
-/* D20: without vel/acc, q uses the drive's settings, starting at vel_limit
- * (600 r/min) and 60 (r/min)/s: 90 deg is a triangle of 2*sqrt(90/360) = 1 s. */
+/* D20: without vel/acc, q uses the drive's settings, output_shaft.
+ * trap_traj_vel_limit (600 r/min) and trap_traj_accel_limit = decel_limit
+ * (60 (r/min)/s): 90 deg is a triangle of 2*sqrt(90/360) = 1 s. */
 static void test_q_without_vel_and_acc_uses_the_drive_settings(void **state)
 {
     (void)state;
@@ -517,6 +518,518 @@ static void test_runs_at_8_khz_too(void **state)
     assert_float_equal(pos(), 180.0f, 0.05f);
 }
 
+/* ---- turn 2: trajectory limits as properties, zero rates, S-curve ---- */
+
+/* The acceleration limit shapes the rising phase, the deceleration limit the
+ * falling one. q 1 180 30 with accel 60 and decel 120 (r/min)/s:
+ * V = 180 deg/s, a1 = 360, a2 = 720 deg/s^2; rising 0.5 s (45 deg),
+ * falling 0.25 s (22.5 deg), cruise 112.5 deg in 0.625 s: T = 1.375 s.
+ *   t = 0.25: 0.5*360*0.25^2 = 11.25
+ *   t = 1.25: 180 - 0.5*720*0.125^2 = 174.375 */
+static void test_trapezoid_rises_at_the_accel_limit_and_falls_at_the_decel_limit(void **state)
+{
+    (void)state;
+    set_f32(DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT, 60.0f);
+    set_f32(DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT, 120.0f);
+    start(DARAN_MOVE_TRAPEZOID, 180.0f, 30.0f, 0.0f, 0.0f, DARAN_GIVEN_VEL);
+    assert_true(model.cfg[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 == 30.0f);
+    run(&model, 0.25);
+    assert_float_equal(model.pos_sp, 11.25f, 1e-3f);
+    assert_float_equal(model.acc_sp, 360.0f, 1e-3f);
+    run(&model, 1.0);
+    assert_float_equal(model.pos_sp, 174.375f, 1e-3f);
+    assert_float_equal(model.acc_sp, -720.0f, 1e-3f);
+    run(&model, 0.124);
+    assert_false(model.trajectory_done);
+    run(&model, 0.001);
+    assert_true(model.trajectory_done);
+    assert_true(model.pos_sp == 180.0f);
+    /* a move's rate sets both limits */
+    start(DARAN_MOVE_TRAPEZOID, 0.0f, 0.0f, 0.0f, 240.0f, DARAN_GIVEN_RATE);
+    assert_true(model.cfg[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 == 240.0f);
+    assert_true(model.cfg[DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT].f32 == 240.0f);
+}
+
+/* Spec 10.1: q with acceleration 0 steps the setpoint to the target at
+ * once; only the controller's velocity and torque limits bound the shaft.
+ * The same when the stored accel (or decel) limit is written 0. */
+static void test_q_with_zero_acceleration_steps_the_setpoint_to_the_target(void **state)
+{
+    float top = 0.0f;
+    int k;
+    (void)state;
+    set_f32(DARAN_PROP_SHAFT_VEL_LIMIT, 120.0f);
+    start(DARAN_MOVE_TRAPEZOID, 90.0f, 0.0f, 0.0f, 0.0f, DARAN_GIVEN_RATE);
+    assert_true(model.trajectory_done);
+    daran_sim_model_tick(&model);
+    assert_true(model.pos_sp == 90.0f);
+    assert_true(model.vel_sp == 0.0f);
+    for (k = 0; k < 1000; k++) {
+        daran_sim_model_tick(&model);
+        top = fabsf(model.vel_rpm) > top ? fabsf(model.vel_rpm) : top;
+    }
+    print_message("q with acc 0: top speed %.2f r/min under a 120 r/min limit\n", (double)top);
+    assert_true(top > 110.0f && top < 125.0f);
+    assert_float_equal(pos(), 90.0f, 0.05f);
+    /* stored limits of 0 mean the same */
+    set_f32(DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT, 60.0f);
+    set_f32(DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT, 0.0f);
+    start(DARAN_MOVE_TRAPEZOID, 0.0f, 0.0f, 0.0f, 0.0f, 0u);
+    assert_true(model.trajectory_done);
+    daran_sim_model_tick(&model);
+    assert_true(model.pos_sp == 0.0f);
+}
+
+/* Spec 10.1: v ... 0 2 holds the velocity setpoint where it is, for as long
+ * as nothing else is commanded; vel_ramp_rate becomes 0. */
+static void test_velocity_ramp_at_rate_zero_holds_the_velocity(void **state)
+{
+    int k;
+    (void)state;
+    start(DARAN_MOVE_VELOCITY, 0.0f, 30.0f, 0.0f, 0.0f, 0u);
+    run(&model, 0.5);
+    start(DARAN_MOVE_VELOCITY_RAMP, 0.0f, 100.0f, 0.0f, 0.0f, 0u);
+    assert_true(model.cfg[DARAN_PROP_VEL_RAMP_RATE].f32 == 0.0f);
+    assert_true(model.input_vel == 100.0f);
+    for (k = 0; k < 1000; k++) {
+        daran_sim_model_tick(&model);
+        assert_true(model.vel_sp == 30.0f);
+    }
+    assert_float_equal(model.vel_rpm, 30.0f, 0.1f);
+    /* a rate written later starts the ramp from there */
+    set_f32(DARAN_PROP_VEL_RAMP_RATE, 140.0f);
+    run(&model, 0.25);
+    assert_float_equal(model.vel_sp, 65.0f, 0.01f);
+}
+
+/* c ... 0 6 holds the torque command; torque_ramp_rate becomes 0. */
+static void test_torque_ramp_at_rate_zero_holds_the_torque(void **state)
+{
+    int k;
+    (void)state;
+    set_f32(DARAN_PROP_LOAD_INERTIA, 1.0e6f); /* shaft blocked */
+    start(DARAN_MOVE_TORQUE, 0.0f, 0.0f, 0.2f, 0.0f, 0u);
+    run(&model, 0.5);
+    start(DARAN_MOVE_TORQUE_RAMP, 0.0f, 0.0f, 1.0f, 0.0f, 0u);
+    assert_true(model.cfg[DARAN_PROP_TORQUE_RAMP_RATE].f32 == 0.0f);
+    for (k = 0; k < 1000; k++) {
+        daran_sim_model_tick(&model);
+        assert_float_equal(model.torque_cmd, 0.2f, 1e-6f);
+    }
+}
+
+/* A filter bandwidth written 0 freezes the filtered setpoint where it is. */
+static void test_filter_bandwidth_zero_holds_the_setpoint(void **state)
+{
+    float held;
+    (void)state;
+    start(DARAN_MOVE_FILTERED_POSITION, 40.0f, 0.0f, 0.0f, 10.0f, DARAN_GIVEN_RATE);
+    run(&model, 0.1);
+    set_f32(DARAN_PROP_INPUT_FILTER_BANDWIDTH, 0.0f);
+    daran_sim_model_tick(&model);
+    held = model.pos_sp;
+    assert_true(held > 1.0f && held < 39.0f);
+    run(&model, 1.0);
+    assert_true(model.pos_sp == held);
+    assert_true(model.vel_sp == 0.0f);
+    assert_float_equal(pos(), held, 0.05f);
+}
+
+/* Cruise velocity (r/min) that makes a move of d deg at a (r/min)/s last
+ * exactly t s: the vendor's planning formulas (protocol.md 6, 10.3). */
+static double cruise_for(double d, double t, double a, int traj_mode)
+{
+    if (traj_mode == 2) { /* t = d/(6v) + 2v/a */
+        return a * (t - sqrt(t * t - 4.0 * d / (3.0 * a))) / 4.0;
+    }
+    { /* in deg: t = d/V + V/A, A = 6a */
+        double acc = 6.0 * a;
+        return (acc * t - sqrt(acc * acc * t * t - 4.0 * acc * d)) / 2.0 / 6.0;
+    }
+}
+
+/* Three drives, distances 30, -60 and 90 deg, T = 2 s: with traj_mode 1 at
+ * 30 (r/min)/s the cruise of the 90 deg one is (360 - sqrt(360^2 - 4*180*90))
+ * / 2 = 52.72 deg/s = 8.787 r/min; with traj_mode 2 at 60 (r/min)/s it is
+ * 60 (2 - sqrt(4 - 4*90/180)) / 4 = 15 (2 - sqrt 2) = 8.787 r/min too
+ * (90/(6*8.787) + 2*8.787/60 = 1.7071 + 0.2929 = 2). Every drive ends on
+ * tick 2000, not one tick early, exactly on its target. */
+static void test_timed_moves_of_three_distances_end_on_the_planned_tick(void **state)
+{
+    static daran_sim_model_t drives[3];
+    static const float dist[3] = {30.0f, -60.0f, 90.0f};
+    int mode;
+    (void)state;
+    for (mode = 1; mode <= 2; mode++) {
+        double a = mode == 1 ? 30.0 : 60.0;
+        int i;
+        long k;
+        for (i = 0; i < 3; i++) {
+            daran_move_t mv = {DARAN_MOVE_TRAPEZOID, DARAN_GIVEN_VEL | DARAN_GIVEN_RATE,
+                               dist[i], 0.0f, 0.0f, (float)a, 0.0f, 0.0f};
+            mv.vel_rpm = (float)cruise_for(fabs((double)dist[i]), 2.0, a, mode);
+            daran_sim_model_init(&drives[i], 1000u);
+            drives[i].cfg[DARAN_PROP_TRAJ_MODE].u32 = (uint32_t)mode;
+            assert_int_equal(daran_sim_model_move(&drives[i], &mv), DARAN_OK);
+            assert_true(drives[i].trap_tc > 0.0f); /* they all cruise */
+        }
+        assert_float_equal(drives[2].trap_vmax / 6.0f, 8.787f, 1e-3f);
+        for (k = 1; k <= 2000; k++) {
+            for (i = 0; i < 3; i++) {
+                daran_sim_model_tick(&drives[i]);
+                assert_int_equal(drives[i].trajectory_done, k == 2000);
+            }
+        }
+        for (i = 0; i < 3; i++) {
+            assert_true(drives[i].pos_sp == dist[i]);
+        }
+    }
+}
+
+/* S-curve too short to reach its cruise: the S-curve triangle. 10 deg at
+ * 60 (r/min)/s (A = 360 deg/s^2) with a cruise of 100 r/min: peak
+ * v = sqrt(a D / 12) = sqrt(50) = 7.071 r/min (42.43 deg/s), T = 4v/a =
+ * 0.4714 s: done on tick 472. */
+static void test_short_s_curve_is_the_s_curve_triangle(void **state)
+{
+    float peak = 0.0f;
+    long k;
+    (void)state;
+    set_u32(DARAN_PROP_TRAJ_MODE, 2u);
+    start(DARAN_MOVE_TRAPEZOID, 10.0f, 100.0f, 0.0f, 60.0f, DARAN_GIVEN_VEL | DARAN_GIVEN_RATE);
+    assert_float_equal(model.trap_vmax, 42.4264f, 1e-3f);
+    assert_float_equal(model.trap_total, 0.471405f, 1e-5f);
+    for (k = 1; k <= 472; k++) {
+        daran_sim_model_tick(&model);
+        peak = model.vel_sp > peak ? model.vel_sp : peak;
+        assert_int_equal(model.trajectory_done, k == 472);
+    }
+    assert_float_equal(peak, 7.071f, 0.01f);
+    assert_true(model.pos_sp == 10.0f);
+}
+
+/* S-curve q 1 270 30 60: V = 180 deg/s, A = 360 deg/s^2; each phase lasts
+ * 2V/A = 1 s and covers V^2/A = 90 deg with jerk A^2/V = 720 deg/s^3; the
+ * cruise 90 deg takes 0.5 s: T = 2.5 s.
+ *   t = 0.5: pos = J t^3/6 = 15 deg, vel = V/2 = 15 r/min, acc = A = 360
+ *   t = 1.0: pos = 90, vel = 30 r/min, acc = 0
+ * Position, velocity and acceleration change by at most one tick's worth
+ * of their derivative: nothing jumps, at the start, the phase changes or the
+ * end. */
+static void test_s_curve_is_continuous_in_position_velocity_and_acceleration(void **state)
+{
+    const float jerk = 720.0f;
+    float prev_pos = 0.0f;
+    float prev_vel = 0.0f;
+    float prev_acc = 0.0f;
+    float worst_jump = 0.0f;
+    long k;
+    (void)state;
+    set_u32(DARAN_PROP_TRAJ_MODE, 2u);
+    start(DARAN_MOVE_TRAPEZOID, 270.0f, 30.0f, 0.0f, 60.0f, DARAN_GIVEN_VEL | DARAN_GIVEN_RATE);
+    assert_float_equal(model.trap_total, 2.5f, 1e-6f);
+    for (k = 1; k <= 2600; k++) {
+        float vel_deg_s;
+        daran_sim_model_tick(&model);
+        vel_deg_s = model.vel_sp * 6.0f;
+        assert_true(fabsf(model.pos_sp - prev_pos) <= 180.0f * 0.001f + 1e-3f);
+        assert_true(fabsf(vel_deg_s - prev_vel) <= 360.0f * 0.001f + 1e-3f);
+        assert_true(fabsf(model.acc_sp - prev_acc) <= jerk * 0.001f + 1e-3f);
+        if (fabsf(model.acc_sp - prev_acc) > worst_jump) {
+            worst_jump = fabsf(model.acc_sp - prev_acc);
+        }
+        /* the velocity's slope is the acceleration */
+        assert_float_equal((vel_deg_s - prev_vel) / 0.001f, 0.5f * (model.acc_sp + prev_acc),
+                           1.0f);
+        prev_pos = model.pos_sp;
+        prev_vel = vel_deg_s;
+        prev_acc = model.acc_sp;
+        if (k == 500) {
+            assert_float_equal(model.pos_sp, 15.0f, 1e-3f);
+            assert_float_equal(model.vel_sp, 15.0f, 1e-4f);
+            assert_float_equal(model.acc_sp, 360.0f, 1e-2f);
+        } else if (k == 1000) {
+            assert_float_equal(model.pos_sp, 90.0f, 1e-3f);
+            assert_float_equal(model.vel_sp, 30.0f, 1e-4f);
+            assert_float_equal(model.acc_sp, 0.0f, 1e-2f);
+        }
+        assert_int_equal(model.trajectory_done, k >= 2500);
+    }
+    print_message("S-curve: largest change of acceleration in one tick %.4f deg/s^2 (jerk x dt "
+                  "= 0.72)\n", (double)worst_jump);
+    assert_true(model.pos_sp == 270.0f);
+    assert_float_equal(pos(), 270.0f, 0.05f);
+}
+
+/* ---- turn 2: faults and error registers ---- */
+
+/* Stall limiter: 15 A (1.5 Nm) into a blocked shaft, limit 10 A for 0.5 s:
+ * the current reaches 10 A within 2 ms (current loop 1000 rad/s), so the
+ * trip comes between 0.50 and 0.51 s. */
+static void test_stall_limiter_trips_after_its_time_at_its_current(void **state)
+{
+    (void)state;
+    set_f32(DARAN_PROP_LOAD_INERTIA, 1.0e6f);
+    set_u32(DARAN_PROP_ENABLE_CURRENT_MODE_VEL_LIMIT, 0u);
+    set_f32(DARAN_PROP_STALL_CURRENT_LIMIT, 10.0f);
+    set_f32(DARAN_PROP_STALL_TIME_LIMIT, 0.5f);
+    start(DARAN_MOVE_TORQUE, 0.0f, 0.0f, 1.5f, 0.0f, 0u);
+    run(&model, 2.0); /* the limiter is off by default */
+    assert_int_equal(model.state, DARAN_STATE_CLOSED_LOOP);
+    set_u32(DARAN_PROP_ENABLE_STALL_LIMIT, 1u);
+    run(&model, 0.5);
+    assert_int_equal(model.state, DARAN_STATE_CLOSED_LOOP);
+    run(&model, 0.01);
+    assert_int_equal(model.state, DARAN_STATE_IDLE);
+    assert_int_equal(model.motor_error, DARAN_MOTOR_ERROR_STALL);
+    assert_int_equal(model.error, DARAN_FLAG_MOTOR_FAILED);
+    assert_int_equal(daran_sim_model_closed_loop(&model), DARAN_ERR_MOTOR_FAULT);
+}
+
+static void test_stall_fault_trips_the_limiter_at_the_next_tick(void **state)
+{
+    daran_move_t mv = {DARAN_MOVE_PASSTHROUGH, 0u, 10.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+    (void)state;
+    daran_sim_model_fault(&model, DARAN_SIM_FAULT_STALL);
+    assert_int_equal(model.state, DARAN_STATE_CLOSED_LOOP);
+    daran_sim_model_tick(&model);
+    assert_int_equal(model.state, DARAN_STATE_IDLE);
+    assert_int_equal(model.motor_error, DARAN_MOTOR_ERROR_STALL);
+    assert_int_equal(model.error, DARAN_FLAG_MOTOR_FAILED);
+    assert_int_equal(daran_sim_model_move(&model, &mv), DARAN_ERR_MOTOR_FAULT);
+    run(&model, 1.0); /* it does not come back by itself */
+    daran_sim_model_clear_errors(&model);
+    assert_int_equal(daran_sim_model_closed_loop(&model), DARAN_OK);
+    run(&model, 0.1);
+    assert_int_equal(model.error, 0u);
+}
+
+/* The overspeed fault throws the shaft to 1.5 x 600 x 1.2 = 1080 r/min.
+ * With enable_overspeed_error 0 (default) nothing trips and the controller
+ * brakes the shaft back; with 1 the next tick trips. */
+static void test_overspeed_trips_the_controller_only_when_enabled(void **state)
+{
+    (void)state;
+    daran_sim_model_fault(&model, DARAN_SIM_FAULT_OVERSPEED);
+    assert_float_equal(model.vel_rpm, 1080.0f, 1e-3f);
+    run(&model, 1.0);
+    assert_int_equal(model.state, DARAN_STATE_CLOSED_LOOP);
+    assert_int_equal(model.controller_error, 0u);
+    assert_float_equal(model.vel_rpm, 0.0f, 1.0f);
+    run(&model, 1.0);
+    assert_float_equal(pos(), 0.0f, 0.05f); /* back where it was held */
+    set_u32(DARAN_PROP_ENABLE_OVERSPEED_ERROR, 1u);
+    daran_sim_model_fault(&model, DARAN_SIM_FAULT_OVERSPEED);
+    daran_sim_model_tick(&model);
+    assert_int_equal(model.state, DARAN_STATE_IDLE);
+    assert_int_equal(model.controller_error, DARAN_CONTROLLER_ERROR_OVERSPEED);
+    assert_int_equal(model.error, DARAN_FLAG_CONTROLLER_FAILED);
+}
+
+/* A real over-speed: spinning at 300 r/min when vel_limit drops to 100
+ * (x 1.2 = 120): the next tick trips. */
+static void test_overspeed_error_trips_beyond_vel_limit_times_tolerance(void **state)
+{
+    (void)state;
+    set_u32(DARAN_PROP_ENABLE_OVERSPEED_ERROR, 1u);
+    start(DARAN_MOVE_VELOCITY, 0.0f, 300.0f, 0.0f, 0.0f, 0u);
+    run(&model, 1.0);
+    assert_int_equal(model.state, DARAN_STATE_CLOSED_LOOP);
+    set_f32(DARAN_PROP_SHAFT_VEL_LIMIT, 100.0f);
+    daran_sim_model_tick(&model);
+    assert_int_equal(model.state, DARAN_STATE_IDLE);
+    assert_int_equal(model.controller_error, DARAN_CONTROLLER_ERROR_OVERSPEED);
+}
+
+/* Writing 0 to one register clears that register only; the drive stays
+ * idle, and a sub-register still set keeps closed loop refused. */
+static void test_writing_zero_clears_one_register_and_the_drive_stays_idle(void **state)
+{
+    daran_value_t v;
+    (void)state;
+    daran_sim_model_fault(&model, DARAN_SIM_FAULT_STALL);
+    daran_sim_model_fault(&model, DARAN_SIM_FAULT_OVERTEMP);
+    daran_sim_model_tick(&model);
+    assert_int_equal(model.error, DARAN_FLAG_MOTOR_FAILED | DARAN_FLAG_OVERTEMP);
+    run(&model, 10.0); /* cool down below the limits */
+    v.u64 = 1u;
+    assert_int_equal(daran_sim_model_set(&model, DARAN_PROP_MOTOR_ERROR, v), DARAN_ERR_OUT_OF_RANGE);
+    set_u32(DARAN_PROP_AXIS_ERROR, 0u);
+    assert_int_equal(model.error, 0u);
+    assert_int_equal(model.motor_error, DARAN_MOTOR_ERROR_STALL);
+    assert_int_equal(model.state, DARAN_STATE_IDLE);
+    assert_int_equal(daran_sim_model_closed_loop(&model), DARAN_ERR_MOTOR_FAULT);
+    set_u32(DARAN_PROP_MOTOR_ERROR, 0u);
+    set_u32(DARAN_PROP_FET_THERMISTOR_ERROR, 0u);
+    assert_int_equal(daran_sim_model_closed_loop(&model), DARAN_ERR_MOTOR_FAULT);
+    set_u32(DARAN_PROP_MOTOR_THERMISTOR_ERROR, 0u);
+    assert_int_equal(model.state, DARAN_STATE_IDLE);
+    assert_int_equal(daran_sim_model_closed_loop(&model), DARAN_OK);
+}
+
+static void test_clear_errors_clears_every_register_and_the_warnings(void **state)
+{
+    (void)state;
+    daran_sim_model_trip(&model, DARAN_FLAG_ESTOP | DARAN_FLAG_WATCHDOG);
+    model.motor_error = DARAN_MOTOR_ERROR_STALL;
+    model.controller_error = DARAN_CONTROLLER_ERROR_OVERSPEED;
+    model.encoder_error = 0x4u;
+    model.fet_thermistor_error = 1u;
+    model.motor_thermistor_error = 1u;
+    model.can_error = 0x8u;
+    model.config_warnings = DARAN_WARNING_NVM_CORRUPT;
+    daran_sim_model_clear_errors(&model);
+    assert_int_equal(model.error | model.motor_error | model.controller_error |
+                         model.encoder_error | model.fet_thermistor_error |
+                         model.motor_thermistor_error | model.can_error | model.config_warnings,
+                     0u);
+    assert_int_equal(model.state, DARAN_STATE_IDLE);
+}
+
+/* The trip level is config.dc_bus_undervoltage_trip_level; the fault sags
+ * 2 V below it, so a level of 0 never trips. */
+static void test_undervoltage_trip_level_is_the_property(void **state)
+{
+    (void)state;
+    set_f32(DARAN_PROP_DC_BUS_UNDERVOLTAGE_TRIP_LEVEL, 25.0f);
+    daran_sim_model_tick(&model);
+    assert_int_equal(model.error, DARAN_FLAG_UNDERVOLTAGE);
+    daran_sim_model_clear_errors(&model);
+    set_f32(DARAN_PROP_DC_BUS_UNDERVOLTAGE_TRIP_LEVEL, 0.0f);
+    assert_int_equal(daran_sim_model_closed_loop(&model), DARAN_OK);
+    daran_sim_model_fault(&model, DARAN_SIM_FAULT_UNDERVOLTAGE);
+    run(&model, 0.05);
+    assert_true(model.vbus_v == 0.0f);
+    assert_int_equal(model.state, DARAN_STATE_CLOSED_LOOP);
+    run(&model, 0.1);
+    assert_true(model.vbus_v > 23.9f);
+}
+
+static void test_startup_closed_loop_control_zero_boots_idle_without_a_flag(void **state)
+{
+    (void)state;
+    set_u32(DARAN_PROP_STARTUP_CLOSED_LOOP_CONTROL, 0u);
+    daran_sim_model_boot(&model);
+    assert_int_equal(model.state, DARAN_STATE_IDLE);
+    assert_int_equal(model.error, 0u);
+    assert_int_equal(daran_sim_model_closed_loop(&model), DARAN_OK);
+}
+
+/* enable_damp_idle: in idle the shorted windings brake the shaft with
+ * kt^2/R = 0.0333 Nm/(rad/s); from 300 r/min it stops far sooner than on
+ * friction alone. */
+static void test_damp_idle_brakes_a_coasting_shaft(void **state)
+{
+    float free_vel;
+    (void)state;
+    start(DARAN_MOVE_VELOCITY, 0.0f, 300.0f, 0.0f, 0.0f, 0u);
+    run(&model, 1.0);
+    daran_sim_model_trip(&model, 0u);
+    run(&model, 0.1);
+    free_vel = model.vel_rpm;
+    assert_true(free_vel > 200.0f);
+    assert_int_equal(daran_sim_model_closed_loop(&model), DARAN_OK);
+    start(DARAN_MOVE_VELOCITY, 0.0f, 300.0f, 0.0f, 0.0f, 0u);
+    run(&model, 1.0);
+    set_u32(DARAN_PROP_ENABLE_DAMP_IDLE, 1u);
+    daran_sim_model_trip(&model, 0u);
+    run(&model, 0.1);
+    assert_true(model.vel_rpm < 1.0f);
+}
+
+/* ---- turn 2: modes ---- */
+
+static void expect_modes(uint32_t control, uint32_t input)
+{
+    daran_value_t v;
+    assert_int_equal(daran_sim_model_get(&model, DARAN_PROP_CONTROL_MODE, &v), DARAN_OK);
+    assert_int_equal(v.u32, control);
+    assert_int_equal(daran_sim_model_get(&model, DARAN_PROP_INPUT_MODE, &v), DARAN_OK);
+    assert_int_equal(v.u32, input);
+}
+
+static void test_control_and_input_modes_read_back_the_last_command(void **state)
+{
+    daran_move_t d = {DARAN_MOVE_IMPEDANCE, 0u, 0.0f, 0.0f, 0.0f, 0.0f, 0.01f, 0.001f};
+    (void)state;
+    expect_modes(3u, 1u); /* holding position after power-up */
+    start(DARAN_MOVE_FILTERED_POSITION, 5.0f, 0.0f, 0.0f, 0.0f, 0u);
+    expect_modes(3u, 3u);
+    start(DARAN_MOVE_TRAPEZOID, 5.0f, 0.0f, 0.0f, 0.0f, 0u);
+    expect_modes(3u, 5u);
+    start(DARAN_MOVE_PASSTHROUGH, 5.0f, 0.0f, 0.0f, 0.0f, 0u);
+    expect_modes(3u, 1u);
+    start(DARAN_MOVE_VELOCITY, 0.0f, 5.0f, 0.0f, 0.0f, 0u);
+    expect_modes(2u, 1u);
+    start(DARAN_MOVE_VELOCITY_RAMP, 0.0f, 5.0f, 0.0f, 10.0f, 0u);
+    expect_modes(2u, 2u);
+    start(DARAN_MOVE_TORQUE, 0.0f, 0.0f, 0.1f, 0.0f, 0u);
+    expect_modes(1u, 1u);
+    start(DARAN_MOVE_TORQUE_RAMP, 0.0f, 0.0f, 0.1f, 1.0f, 0u);
+    expect_modes(1u, 6u);
+    assert_int_equal(daran_sim_model_move(&model, &d), DARAN_OK);
+    expect_modes(3u, 9u);
+    set_f32(DARAN_PROP_VEL_SETPOINT, 1.0f);
+    expect_modes(2u, 1u);
+    set_f32(DARAN_PROP_TORQUE_SETPOINT, 0.0f);
+    expect_modes(1u, 1u);
+    set_f32(DARAN_PROP_POS_SETPOINT, 0.0f);
+    expect_modes(3u, 1u);
+}
+
+/* ODrive style: writing input_mode/control_mode switches the controller
+ * from the current inputs; input_mode 5 then input_pos plans a trapezoid
+ * with the stored limits (600 r/min, 60 (r/min)/s: 90 deg is a 1 s
+ * triangle). */
+static void test_writing_the_modes_switches_the_controller_from_the_inputs(void **state)
+{
+    (void)state;
+    set_u32(DARAN_PROP_INPUT_MODE, 5u);
+    expect_modes(3u, 5u);
+    assert_true(model.trajectory_done); /* already at input_pos */
+    set_f32(DARAN_PROP_INPUT_POS, 90.0f);
+    assert_false(model.trajectory_done);
+    run(&model, 0.999);
+    assert_false(model.trajectory_done);
+    run(&model, 0.001);
+    assert_true(model.trajectory_done);
+    assert_true(model.pos_sp == 90.0f);
+    /* velocity control from input_vel */
+    set_f32(DARAN_PROP_INPUT_VEL, 20.0f);
+    set_u32(DARAN_PROP_CONTROL_MODE, 2u);
+    expect_modes(2u, 1u);
+    run(&model, 0.5);
+    assert_float_equal(model.vel_rpm, 20.0f, 0.2f);
+    /* ramp from there to input_vel at vel_ramp_rate (60 (r/min)/s) */
+    set_f32(DARAN_PROP_INPUT_VEL, 50.0f);
+    set_u32(DARAN_PROP_INPUT_MODE, 2u);
+    expect_modes(2u, 2u);
+    run(&model, 0.25);
+    assert_float_equal(model.vel_sp, 35.0f, 0.5f);
+    /* torque control from input_torque */
+    set_f32(DARAN_PROP_INPUT_TORQUE, 0.05f);
+    set_u32(DARAN_PROP_CONTROL_MODE, 1u);
+    expect_modes(1u, 1u);
+    daran_sim_model_tick(&model);
+    assert_float_equal(model.torque_cmd, 0.05f, 1e-6f);
+    set_u32(DARAN_PROP_INPUT_MODE, 6u);
+    expect_modes(1u, 6u);
+    /* back to position control: passthrough toward input_pos (90), with
+     * input_vel and input_torque as its feed-forwards */
+    set_f32(DARAN_PROP_INPUT_VEL, 0.0f);
+    set_f32(DARAN_PROP_INPUT_TORQUE, 0.0f);
+    set_u32(DARAN_PROP_CONTROL_MODE, 3u);
+    expect_modes(3u, 1u);
+    set_u32(DARAN_PROP_INPUT_MODE, 3u);
+    expect_modes(3u, 3u);
+    set_u32(DARAN_PROP_INPUT_MODE, 9u);
+    expect_modes(3u, 9u);
+    set_u32(DARAN_PROP_INPUT_MODE, 1u);
+    expect_modes(3u, 1u);
+    run(&model, 3.0);
+    assert_float_equal(pos(), 90.0f, 0.05f);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -543,6 +1056,25 @@ int main(void)
         cmocka_unit_test_setup(test_undervoltage_sag_trips_and_recovers, setup),
         cmocka_unit_test_setup(test_writing_setpoints_sets_the_matching_input, setup),
         cmocka_unit_test_setup(test_runs_at_8_khz_too, setup),
+        cmocka_unit_test_setup(test_trapezoid_rises_at_the_accel_limit_and_falls_at_the_decel_limit, setup),
+        cmocka_unit_test_setup(test_q_with_zero_acceleration_steps_the_setpoint_to_the_target, setup),
+        cmocka_unit_test_setup(test_velocity_ramp_at_rate_zero_holds_the_velocity, setup),
+        cmocka_unit_test_setup(test_torque_ramp_at_rate_zero_holds_the_torque, setup),
+        cmocka_unit_test_setup(test_filter_bandwidth_zero_holds_the_setpoint, setup),
+        cmocka_unit_test_setup(test_timed_moves_of_three_distances_end_on_the_planned_tick, setup),
+        cmocka_unit_test_setup(test_short_s_curve_is_the_s_curve_triangle, setup),
+        cmocka_unit_test_setup(test_s_curve_is_continuous_in_position_velocity_and_acceleration, setup),
+        cmocka_unit_test_setup(test_stall_limiter_trips_after_its_time_at_its_current, setup),
+        cmocka_unit_test_setup(test_stall_fault_trips_the_limiter_at_the_next_tick, setup),
+        cmocka_unit_test_setup(test_overspeed_trips_the_controller_only_when_enabled, setup),
+        cmocka_unit_test_setup(test_overspeed_error_trips_beyond_vel_limit_times_tolerance, setup),
+        cmocka_unit_test_setup(test_writing_zero_clears_one_register_and_the_drive_stays_idle, setup),
+        cmocka_unit_test_setup(test_clear_errors_clears_every_register_and_the_warnings, setup),
+        cmocka_unit_test_setup(test_undervoltage_trip_level_is_the_property, setup),
+        cmocka_unit_test_setup(test_startup_closed_loop_control_zero_boots_idle_without_a_flag, setup),
+        cmocka_unit_test_setup(test_damp_idle_brakes_a_coasting_shaft, setup),
+        cmocka_unit_test_setup(test_control_and_input_modes_read_back_the_last_command, setup),
+        cmocka_unit_test_setup(test_writing_the_modes_switches_the_controller_from_the_inputs, setup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

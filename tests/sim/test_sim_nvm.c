@@ -1,5 +1,6 @@
 /* Non-volatile memory of the simulated drive: save/load, erase, corruption
- * falling back to defaults with a warning flag, and a power cut at every byte
+ * falling back to defaults with a warning (axis0.config_warnings, never an
+ * error), the whole property table round trip, and a power cut at every byte
  * offset of a save or an erase never losing both configs nor loading
  * garbage. */
 #include <setjmp.h>
@@ -215,6 +216,94 @@ static void test_drive_with_corrupt_memory_moves_and_reports_the_flag(void **sta
     assert_int_equal(d.model.config_warnings, DARAN_WARNING_NVM_CORRUPT);
 }
 
+/* The vendor's whole table is configuration too: s32 values (direction -1,
+ * pole pairs, cpr), the gear ratio, the trajectory limits and mode, the
+ * under-voltage trip level survive a save and a power cycle, and so does a
+ * value written through a rotor-side view. */
+static void test_settings_of_the_whole_table_survive_a_save(void **state)
+{
+    static daran_sim_drive_t d;
+    (void)state;
+    daran_sim_drive_init(&d, 0u, 1000u);
+    d.model.cfg[DARAN_PROP_MOTOR_DIRECTION].s32 = -1;
+    d.model.cfg[DARAN_PROP_POLE_PAIRS].s32 = 21;
+    d.model.cfg[DARAN_PROP_ENCODER_CPR].s32 = 4096;
+    d.model.cfg[DARAN_PROP_STORED_TURNS_COUNTS].s32 = -123456;
+    d.model.cfg[DARAN_PROP_GEAR_RATIO].f32 = 8.0f;
+    d.model.cfg[DARAN_PROP_TRAJ_MODE].u32 = 2u;
+    d.model.cfg[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 = 45.0f;
+    d.model.cfg[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 = 0.0f;
+    d.model.cfg[DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT].f32 = 90.0f;
+    d.model.cfg[DARAN_PROP_DC_BUS_UNDERVOLTAGE_TRIP_LEVEL].f32 = 11.5f;
+    d.model.cfg[DARAN_PROP_ENABLE_STALL_LIMIT].u32 = 1u;
+    d.model.cfg[DARAN_PROP_CAN_HEARTBEAT_MS].u32 = 100u;
+    {
+        daran_value_t v;
+        v.u64 = 0u;
+        v.f32 = 0.02f; /* rotor Nm/A: 0.16 Nm/A at the shaft */
+        assert_int_equal(daran_sim_hal.set(&d, DARAN_PROP_MOTOR_TORQUE_CONSTANT, v), DARAN_OK);
+    }
+    assert_true(daran_sim_nvm_save(&d.storage, &d.model));
+    daran_sim_model_default_config(&d.model);
+    daran_sim_drive_power_on(&d);
+    assert_int_equal(d.nvm_status, DARAN_SIM_NVM_LOADED);
+    assert_int_equal(d.model.cfg[DARAN_PROP_MOTOR_DIRECTION].s32, -1);
+    assert_int_equal(d.model.cfg[DARAN_PROP_POLE_PAIRS].s32, 21);
+    assert_int_equal(d.model.cfg[DARAN_PROP_ENCODER_CPR].s32, 4096);
+    assert_int_equal(d.model.cfg[DARAN_PROP_STORED_TURNS_COUNTS].s32, -123456);
+    assert_true(d.model.cfg[DARAN_PROP_GEAR_RATIO].f32 == 8.0f);
+    assert_int_equal(d.model.cfg[DARAN_PROP_TRAJ_MODE].u32, 2u);
+    assert_true(d.model.cfg[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 == 45.0f);
+    assert_true(d.model.cfg[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 == 0.0f);
+    assert_true(d.model.cfg[DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT].f32 == 90.0f);
+    assert_true(d.model.cfg[DARAN_PROP_DC_BUS_UNDERVOLTAGE_TRIP_LEVEL].f32 == 11.5f);
+    assert_int_equal(d.model.cfg[DARAN_PROP_ENABLE_STALL_LIMIT].u32, 1u);
+    assert_int_equal(d.model.cfg[DARAN_PROP_CAN_HEARTBEAT_MS].u32, 100u);
+    assert_true(d.model.cfg[DARAN_PROP_TORQUE_CONSTANT].f32 == 0.16f);
+}
+
+/* An image with a valid CRC but a setting the model divides by at 0 (not
+ * something a save of a range-checked drive writes) is damage: defaults. */
+static void test_an_image_with_a_zero_gear_ratio_is_damage(void **state)
+{
+    (void)state;
+    m.cfg[DARAN_PROP_GEAR_RATIO].f32 = 0.0f;
+    save_with_gain(41.0f);
+    assert_true(loaded_gain(DARAN_SIM_NVM_DAMAGED) == 20.0f);
+    m.cfg[DARAN_PROP_GEAR_RATIO].f32 = 1.0f;
+    m.cfg[DARAN_PROP_ENCODER_CPR].s32 = -5;
+    save_with_gain(42.0f);
+    assert_true(loaded_gain(DARAN_SIM_NVM_DAMAGED) == 20.0f);
+}
+
+/* An image of format version 1 (before the whole table) reads as corrupt:
+ * defaults and the warning, never a misread. */
+static void test_an_image_of_the_previous_version_is_a_warning_not_a_misread(void **state)
+{
+    static daran_sim_drive_t d;
+    (void)state;
+    daran_sim_drive_init(&d, 0u, 1000u);
+    d.model.cfg[DARAN_PROP_POS_GAIN].f32 = 44.0f;
+    assert_true(daran_sim_nvm_save(&d.storage, &d.model));
+    /* the version field of the committed slot (slot 0, bytes 4..5), CRC
+     * made to match as a version-1 firmware would have written it */
+    d.ram.bytes[4] = 1u;
+    {
+        uint32_t len = (uint32_t)d.ram.bytes[6] | ((uint32_t)d.ram.bytes[7] << 8);
+        uint32_t crc = daran_sim_crc32(d.ram.bytes + 4, 8u, 0u);
+        crc = daran_sim_crc32(d.ram.bytes + 16, len, crc);
+        d.ram.bytes[12] = (uint8_t)crc;
+        d.ram.bytes[13] = (uint8_t)(crc >> 8);
+        d.ram.bytes[14] = (uint8_t)(crc >> 16);
+        d.ram.bytes[15] = (uint8_t)(crc >> 24);
+    }
+    daran_sim_drive_power_on(&d);
+    assert_int_equal(d.nvm_status, DARAN_SIM_NVM_DAMAGED);
+    assert_true(d.model.cfg[DARAN_PROP_POS_GAIN].f32 == 20.0f);
+    assert_int_equal(d.model.config_warnings, DARAN_WARNING_NVM_CORRUPT);
+    assert_int_equal(d.model.error, 0u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -227,6 +316,9 @@ int main(void)
         cmocka_unit_test_setup(test_corrupted_memory_boots_defaults_with_a_warning_flag, setup),
         cmocka_unit_test_setup(test_a_flipped_byte_anywhere_in_an_image_is_found, setup),
         cmocka_unit_test_setup(test_drive_with_corrupt_memory_moves_and_reports_the_flag, setup),
+        cmocka_unit_test_setup(test_settings_of_the_whole_table_survive_a_save, setup),
+        cmocka_unit_test_setup(test_an_image_with_a_zero_gear_ratio_is_damage, setup),
+        cmocka_unit_test_setup(test_an_image_of_the_previous_version_is_a_warning_not_a_misread, setup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
