@@ -2,7 +2,8 @@
  *   set UART_BAUDRATE 9600     move 0 10 0 0 25 0 0 g2     action 6
  * (move: kind pos vel torque rate kp kd, then the DARAN_GIVEN_ bits),
  * separated by "; ". Floats are written by the core's own shortest
- * formatter so that the log compares as text. */
+ * formatter so that the log compares as text; s32 values with their sign.
+ * A set is also stored, so a later line of the same case reads it back. */
 #include "mock_hal.h"
 
 #include <string.h>
@@ -13,13 +14,9 @@
 static const char *const prop_names[DARAN_PROP_COUNT] = {DARAN_PROPERTY_LIST(PROP_NAME)};
 #undef PROP_NAME
 
-#define PROP_IS_F32(id, path, scope, type, access, range, unit) DARAN_TARGET_IS_##type,
-#define DARAN_TARGET_IS_F32 1
-#define DARAN_TARGET_IS_U32 0
-#define DARAN_TARGET_IS_U64 0
-#define DARAN_TARGET_IS_BOOL 0
-static const unsigned char prop_is_f32[DARAN_PROP_COUNT] = {DARAN_PROPERTY_LIST(PROP_IS_F32)};
-#undef PROP_IS_F32
+#define PROP_TYPE(id, path, scope, type, access, range, unit) DARAN_TYPE_##type,
+static const unsigned char prop_type[DARAN_PROP_COUNT] = {DARAN_PROPERTY_LIST(PROP_TYPE)};
+#undef PROP_TYPE
 
 static void log_text(target_mock_t *m, const char *text, size_t len)
 {
@@ -70,11 +67,27 @@ static daran_result_t mock_set(void *ctx, daran_prop_t prop, daran_value_t value
     target_mock_t *m = ctx;
     log_begin(m, "set ");
     log_str(m, prop_names[prop]);
-    if (prop_is_f32[prop]) {
+    switch (prop_type[prop]) {
+    case DARAN_TYPE_F32:
         log_f32(m, value.f32);
-    } else {
-        log_u64(m, prop == DARAN_PROP_SERIAL_NUMBER ? value.u64 : value.u32);
+        break;
+    case DARAN_TYPE_U64:
+        log_u64(m, value.u64);
+        break;
+    case DARAN_TYPE_S32:
+        if (value.s32 < 0) {
+            log_str(m, " -");
+            char buf[DARAN_U64_TEXT_MAX];
+            log_text(m, buf, daran_format_u64((uint64_t)(-(int64_t)value.s32), buf));
+        } else {
+            log_u64(m, (uint64_t)value.s32);
+        }
+        break;
+    default:
+        log_u64(m, value.u32);
+        break;
     }
+    m->value[prop] = value;
     return DARAN_OK;
 }
 
@@ -120,4 +133,8 @@ void target_mock_reset(target_mock_t *m)
     m->value[DARAN_PROP_HW_VERSION].u32 = 3u;
     m->value[DARAN_PROP_SERIAL_NUMBER].u64 = 2026000001u;
     m->value[DARAN_PROP_SHAFT_VEL_LIMIT].f32 = 300.0f;
+    m->value[DARAN_PROP_TRAJ_MODE].u32 = 1u;
+    m->value[DARAN_PROP_MOTOR_DIRECTION].s32 = 1;
+    m->value[DARAN_PROP_ENCODER_POS_ABS].s32 = -16384;
+    m->value[DARAN_PROP_ENCODER_TURN_ABS].s32 = INT32_MIN;
 }
