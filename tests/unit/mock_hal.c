@@ -43,6 +43,15 @@ static void mock_defaults(mock_t *m, uint32_t id)
     p[DARAN_PROP_STEPS_PER_TURN].f32 = 360.0f;
     p[DARAN_PROP_TORQUE_CONSTANT].f32 = 0.1f;
     p[DARAN_PROP_WATCHDOG_TIMEOUT].f32 = 1.0f;
+    /* spec 10.2: a trapezoid unless a host asks for the S-curve */
+    p[DARAN_PROP_TRAJ_MODE].u32 = 1;
+    /* rows whose range refuses 0 hold a value the range accepts */
+    p[DARAN_PROP_MOTOR_DIRECTION].s32 = 1;
+    p[DARAN_PROP_POLE_PAIRS].s32 = 7;
+    p[DARAN_PROP_ENCODER_CPR].s32 = 16384;
+    p[DARAN_PROP_GEAR_RATIO].f32 = 1.0f;
+    p[DARAN_PROP_CONTROL_MODE].u32 = 3;
+    p[DARAN_PROP_INPUT_MODE].u32 = 3;
 }
 
 mock_t *mock_new_slot(int slot, uint32_t id)
@@ -163,6 +172,13 @@ static daran_result_t mock_move(void *ctx, const daran_move_t *mv)
         p[DARAN_PROP_POS_SETPOINT].f32 = mv->pos_deg;
         break;
     case DARAN_MOVE_TRAPEZOID:
+        /* daran_hal.h: a given cruise and acceleration become the trap_traj settings */
+        if (mv->given & DARAN_GIVEN_VEL)
+            p[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 = mv->vel_rpm;
+        if (mv->given & DARAN_GIVEN_RATE) {
+            p[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 = mv->rate;
+            p[DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT].f32 = mv->rate;
+        }
         /* The mock "arrives" at once so relative starts are predictable. */
         p[DARAN_PROP_INPUT_POS].f32 = mv->pos_deg;
         p[DARAN_PROP_POS_SETPOINT].f32 = mv->pos_deg;
@@ -214,7 +230,17 @@ static daran_result_t mock_action(void *ctx, daran_action_t action)
         p[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_IDLE;
         p[DARAN_PROP_AXIS_ERROR].u32 |= DARAN_FLAG_ESTOP;
         break;
-    case DARAN_ACTION_CLEAR_ERRORS: p[DARAN_PROP_AXIS_ERROR].u32 = 0; break;
+    case DARAN_ACTION_CLEAR_ERRORS:
+        /* spec 10.4: sc clears every error register and the warnings */
+        p[DARAN_PROP_AXIS_ERROR].u32 = 0;
+        p[DARAN_PROP_MOTOR_ERROR].u32 = 0;
+        p[DARAN_PROP_ENCODER_ERROR].u32 = 0;
+        p[DARAN_PROP_CONTROLLER_ERROR].u32 = 0;
+        p[DARAN_PROP_FET_THERMISTOR_ERROR].u32 = 0;
+        p[DARAN_PROP_MOTOR_THERMISTOR_ERROR].u32 = 0;
+        p[DARAN_PROP_CAN_ERROR].u32 = 0;
+        p[DARAN_PROP_CONFIG_WARNINGS].u32 = 0;
+        break;
     case DARAN_ACTION_REBOOT:
         p[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
         p[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_CLOSED_LOOP;

@@ -180,8 +180,8 @@ bool mock_uses_multi(const char *line);
 /* Tests generated from tables: a CMUnitTest list with names built at run
  * time, so every row is its own case. */
 typedef struct mock_suite {
-    struct CMUnitTest tests[600];
-    char names[600][112];
+    struct CMUnitTest tests[1200];
+    char names[1200][112];
     size_t count;
 } mock_suite_t;
 void mock_suite_add(mock_suite_t *s, CMUnitTestFunction fn, void *state, const char *fmt, ...);

@@ -169,7 +169,10 @@ static void test_reads_with_id_0_are_answered(void **state)
     m->props[DARAN_PROP_POS_ESTIMATE].f32 = 3.5f;
     assert_string_equal(ASSERT_QUERY(m, "f 0"), "3.5 0\n");
     assert_string_equal(ASSERT_QUERY(m, "g 0"), "24 0\n");
-    assert_string_equal(ASSERT_QUERY(m, "e 0"), "0\n");
+    mock_send_line(m, "e 0");
+    ASSERT_REPLY(m, "axis: 0\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
+                    "motor_thermistor: 0\ncan: 0\n");
+    ASSERT_NO_EFFECT(m);
     assert_string_equal(ASSERT_QUERY(m, "i 0"), "10203 7 1234567890123\n");
     assert_string_equal(ASSERT_QUERY(m, "r axis0.config.can_node_id"), "9\n");
     assert_string_equal(ASSERT_QUERY(m, "r vbus_voltage 0"), "24\n");
@@ -219,8 +222,10 @@ static void test_two_drives_on_one_link_answer_only_their_own_lines(void **state
         assert_true(daran_rx_byte(&b->drive, (uint8_t)*c));
         (void)daran_poll(&b->drive);
     }
-    ASSERT_REPLY(a, "11 0\n0\nerror: unknown command\n");
-    ASSERT_REPLY(b, "22 0\n0\nerror: unknown command\n");
+    ASSERT_REPLY(a, "11 0\naxis: 0\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
+                    "motor_thermistor: 0\ncan: 0\nerror: unknown command\n");
+    ASSERT_REPLY(b, "22 0\naxis: 0\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
+                    "motor_thermistor: 0\ncan: 0\nerror: unknown command\n");
     assert_int_equal(mock_count(a, MOCK_CALL_MOVE), 1);
     assert_true(a->calls[0].move.pos_deg == 3.0f);
     assert_int_equal(mock_count(b, MOCK_CALL_MOVE), 1);

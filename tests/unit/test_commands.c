@@ -1,9 +1,11 @@
 /* Unit tests of the commands themselves: every worked example of spec
  * section 9 with the exact HAL call it must make, omitted optional values,
- * the multi-motor preset/start commands with the timed trapezoid of spec
- * section 6 (D16-D19), system commands, and both vendor recordings. */
+ * zero rates (spec 10.1, D30), the multi-motor preset/start commands with the
+ * timed trapezoid of spec section 6 and the S-curve of 10.3 (D16-D19, D31),
+ * system commands, and every vendor recording on a bus of three drives. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "mock_hal.h"
@@ -148,12 +150,14 @@ static void test_motion_ranges_are_checked(void **state)
 {
     (void)state;
     mock_t *m = mock_new();
-    ASSERT_ERROR(m, "t 1 10 0 0", "value out of range");
+    /* zero rates are accepted (spec 10.1): see the zero-rate tests below */
     ASSERT_ERROR(m, "t 1 10 0 -1", "value out of range");
+    ASSERT_ERROR(m, "t 1 10 0 -1e-45", "value out of range");
     ASSERT_ERROR(m, "q 1 10 0", "value out of range");
+    ASSERT_ERROR(m, "q 1 10 -0", "value out of range");
     ASSERT_ERROR(m, "q 1 10 -5", "value out of range");
-    ASSERT_ERROR(m, "q 1 10 5 0", "value out of range");
     ASSERT_ERROR(m, "q 1 10 5 -1", "value out of range");
+    ASSERT_ERROR(m, "q 1 10 5 -1e-45", "value out of range");
     ASSERT_ERROR(m, "d 1 10 0 0.5 -0.1 0.01", "value out of range");
     ASSERT_ERROR(m, "d 1 10 0 0.5 0.1 -0.01", "value out of range");
     ASSERT_ERROR(m, "v 1 20 -1 2", "value out of range");
@@ -165,26 +169,141 @@ static void test_motion_ranges_are_checked(void **state)
     ASSERT_MOVE_EQUALS(m, mv, {F, GR, 10, 0, 0, 1e-30f, 0, 0});
 }
 
+/* ---- zero rates (spec 10.1, D30) ---- */
+
+/* A rate of 0 reaches the HAL as +0: it becomes a property that reads back
+ * "0", never "-0". */
+static void assert_positive_zero(const mock_t *m, float rate, int line)
+{
+    mock_check(rate == 0.0f && !signbit(rate), m, __FILE__, line, "rate: expected +0, got %a",
+               (double)rate);
+}
+
+static void test_t_with_bandwidth_0_is_accepted_and_keeps_the_bandwidth(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    /* the vendor's set_angle(1, 30) */
+    const daran_move_t *mv = ASSERT_MOVE(m, "t 1 30 0 0 ");
+    ASSERT_MOVE_EQUALS(m, mv, {F, 0, 30, 0, 0, 0, 0, 0});
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "20\n");
+    mv = ASSERT_MOVE(m, "t 1 -30 5 -0");
+    ASSERT_MOVE_EQUALS(m, mv, {F, 0, -30, 0, 0, 0, 0, 0});
+    assert_positive_zero(m, mv->rate, __LINE__);
+    mv = ASSERT_MOVE(m, "t 1 30 0 0 *102");
+    ASSERT_MOVE_EQUALS(m, mv, {F, 0, 30, 0, 0, 0, 0, 0});
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "20\n");
+    /* the same as omitting it */
+    mv = ASSERT_MOVE(m, "t 1 30 0");
+    ASSERT_MOVE_EQUALS(m, mv, {F, 0, 30, 0, 0, 0, 0, 0});
+    /* a positive bandwidth is still given and stored */
+    mv = ASSERT_MOVE(m, "t 1 30 0 25");
+    ASSERT_MOVE_EQUALS(m, mv, {F, GR, 30, 0, 0, 25, 0, 0});
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "25\n");
+    ASSERT_ERROR(m, "t 1 30 0 -1", "value out of range");
+}
+
+static void test_q_with_acceleration_0_is_accepted_as_a_step_without_cruise(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 = 120.0f;
+    m->props[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 = 30.0f;
+    m->props[DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT].f32 = 30.0f;
+    /* rate 0 given, cruise not given and 0: "as fast as the drive can" */
+    const daran_move_t *mv = ASSERT_MOVE(m, "q 1 10 30 0 ");
+    ASSERT_MOVE_EQUALS(m, mv, {Q, GR, 10, 0, 0, 0, 0, 0});
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_vel_limit"), "120\n");
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"), "0\n");
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_decel_limit"), "0\n");
+    mv = ASSERT_MOVE(m, "q 1 -10 30 -0");
+    ASSERT_MOVE_EQUALS(m, mv, {Q, GR, -10, 0, 0, 0, 0, 0});
+    assert_positive_zero(m, mv->rate, __LINE__);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"), "0\n");
+    mv = ASSERT_MOVE(m, "q 1 10 30 0 *82");
+    ASSERT_MOVE_EQUALS(m, mv, {Q, GR, 10, 0, 0, 0, 0, 0});
+    /* a cruise of 0 stays refused, with or without an acceleration */
+    ASSERT_ERROR(m, "q 1 10 0 0", "value out of range");
+    ASSERT_ERROR(m, "q 1 10 0 5", "value out of range");
+    ASSERT_ERROR(m, "q 1 10 -30 0", "value out of range");
+    ASSERT_ERROR(m, "q 1 10 30 -1", "value out of range");
+}
+
+static void test_v_mode_2_with_ramp_0_is_accepted_with_rate_0(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    const daran_move_t *mv = ASSERT_MOVE(m, "v 1 60 0 2 ");
+    ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, 60, 0, 0, 0, 0});
+    assert_positive_zero(m, mv->rate, __LINE__);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.vel_ramp_rate"), "0\n");
+    m->props[DARAN_PROP_VEL_RAMP_RATE].f32 = 60.0f;
+    mv = ASSERT_MOVE(m, "v 1 -60 -0 2");
+    ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, -60, 0, 0, 0, 0});
+    assert_positive_zero(m, mv->rate, __LINE__);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.vel_ramp_rate"), "0\n");
+    mv = ASSERT_MOVE(m, "v 1 60 0 2 *99");
+    ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, 60, 0, 0, 0, 0});
+    ASSERT_ERROR(m, "v 1 60 -1 2", "value out of range");
+    ASSERT_ERROR(m, "v 1 60 -1e-45 2", "value out of range");
+    /* mode 1: the parameter is a feed-forward torque and may be anything */
+    mv = ASSERT_MOVE(m, "v 1 60 -1 1");
+    ASSERT_MOVE_EQUALS(m, mv, {V, 0, 0, 60, -1, 0, 0, 0});
+}
+
+static void test_c_ramp_0_is_accepted_with_rate_0_in_modes_6_and_2(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    const daran_move_t *mv = ASSERT_MOVE(m, "c 1 0.05 0 6 ");
+    ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.05f, 0, 0, 0});
+    assert_positive_zero(m, mv->rate, __LINE__);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"), "0\n");
+    m->props[DARAN_PROP_TORQUE_RAMP_RATE].f32 = 1.0f;
+    mv = ASSERT_MOVE(m, "c 1 0.05 0 2");
+    ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.05f, 0, 0, 0});
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"), "0\n");
+    mv = ASSERT_MOVE(m, "c 1 -0.05 -0 6");
+    ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, -0.05f, 0, 0, 0});
+    assert_positive_zero(m, mv->rate, __LINE__);
+    mv = ASSERT_MOVE(m, "c 1 0.05 -0 2");
+    assert_positive_zero(m, mv->rate, __LINE__);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"), "0\n");
+    mv = ASSERT_MOVE(m, "c 1 0.05 0 6 *111");
+    ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.05f, 0, 0, 0});
+    ASSERT_ERROR(m, "c 1 0.05 -1 6", "value out of range");
+    ASSERT_ERROR(m, "c 1 0.05 -1 2", "value out of range");
+    ASSERT_ERROR(m, "c 1 0.05 -1e-45 6", "value out of range");
+}
+
 /* ---- multi-motor: ms + mt/mq/mp/mv/mc ---- */
 
 /* Expected cruise of a timed trapezoid, in double, from the float inputs. */
 typedef struct timed { bool feasible; double vel_rpm, rate; } timed_t;
 
-static timed_t timed_expect(float dist, float duration, float acc)
+static timed_t timed_expect_shape(float dist, float duration, float acc, bool s_curve)
 {
+    /* trapezoid: T = D/V + V/A; S-curve: T = D/V + 2V/A (spec 10.3), so
+     * s V^2 - A T V + A D = 0 with s = 1 or 2 */
     timed_t t = {false, 0, 0};
+    double s = s_curve ? 2.0 : 1.0;
     double d = fabs((double)dist), tt = duration, a = 6.0 * (double)acc;
-    double disc = a * a * tt * tt - 4.0 * a * d;
+    double disc = a * a * tt * tt - 4.0 * s * a * d;
     if (disc >= 0) {
         t.feasible = true;
-        t.vel_rpm = (a * tt - sqrt(disc)) / 2.0 / 6.0;
+        t.vel_rpm = (a * tt - sqrt(disc)) / (2.0 * s) / 6.0;
         t.rate = acc;
     } else if (-disc <= 1e-4 * a * a * tt * tt) {
         t.feasible = true;
         t.vel_rpm = 2.0 * d / tt / 6.0;
-        t.rate = 4.0 * d / (tt * tt) / 6.0;
+        t.rate = 4.0 * s * d / (tt * tt) / 6.0;
     }
     return t;
+}
+
+static timed_t timed_expect(float dist, float duration, float acc)
+{
+    return timed_expect_shape(dist, duration, acc, false);
 }
 
 static void assert_close(const mock_t *m, double got, double want, const char *what, int line)
@@ -296,22 +415,236 @@ static void test_mq_with_zero_distance_is_accepted(void **state)
         assert_true(mv->vel_rpm > 0.0f);
     if (mv->given & GR)
         assert_true(mv->rate > 0.0f);
+    /* D31: nothing to plan, the drive keeps its settings */
+    ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 5, 0, 0, 0, 0, 0});
     ASSERT_SILENT(m, "ms 1 5 2 10");
     mv = ASSERT_MOVE(m, "mq 1 0");
     assert_true(mv->pos_deg == 5.0f);
+    ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 5, 0, 0, 0, 0, 0});
 }
 
-static void test_mq_duration_and_accel_must_be_positive(void **state)
+static void test_mq_negative_duration_or_accel_is_out_of_range(void **state)
 {
     (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
-    static const char *const presets[] = {"ms 1 10 0 10", "ms 1 10 -1 10", "ms 1 10 2 0",
-                                          "ms 1 10 2 -3"};
-    for (size_t i = 0; i < 4; i++) {
+    static const char *const presets[] = {"ms 1 10 -1 10", "ms 1 10 2 -3", "ms 1 10 -1e-45 10",
+                                          "ms 1 10 2 -1e-45", "ms 1 0 -1 10", "ms 1 0 2 -3",
+                                          "ms 1 10 -1 0"};
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++) {
         ASSERT_SILENT(m, presets[i]);
         ASSERT_ERROR(m, "mq 1 1", "value out of range");
+        ASSERT_ERROR(m, "mq 1 0", "value out of range");
     }
+}
+
+/* Spec 10.1: the vendor library computes duration 0 when every drive already
+ * stands at its target; a drive that must move cannot do it in no time. */
+static void test_mq_zero_duration_or_accel_with_a_distance_is_infeasible(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 20.0f;
+    static const char *const presets[] = {"ms 1 30 0 10", "ms 1 30 2 0", "ms 1 30 0 0",
+                                          "ms 1 30 -0 10", "ms 1 30 2 -0", "ms 1 30 0.0 10 "};
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++) {
+        ASSERT_SILENT(m, presets[i]);
+        ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
+        ASSERT_ERROR(m, "mq 0 1", "trajectory infeasible");
+    }
+    /* a refused start keeps its preset (D16): it still runs as another kind */
+    const daran_move_t *mv = ASSERT_MOVE(m, "mp 1 0");
+    assert_true(mv->pos_deg == 30.0f);
+}
+
+static void test_mq_zero_duration_or_accel_at_zero_distance_is_a_trapezoid_in_place(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 20.0f;
+    /* the vendor recording: ms 1 20 0.0 10 + mq 0 0 when the drive stands at 20 */
+    static const char *const absolute[] = {"ms 1 20 0.0 10 ", "ms 1 20 2 0", "ms 1 20 0 0",
+                                           "ms 1 20 -0 -0"};
+    for (size_t i = 0; i < sizeof absolute / sizeof absolute[0]; i++) {
+        ASSERT_SILENT(m, absolute[i]);
+        const daran_move_t *mv = ASSERT_MOVE(m, "mq 0 0");
+        ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 20, 0, 0, 0, 0, 0});
+    }
+    static const char *const relative[] = {"ms 1 0 0 10", "ms 1 0 2 0", "ms 1 -0 0 0"};
+    for (size_t i = 0; i < sizeof relative / sizeof relative[0]; i++) {
+        ASSERT_SILENT(m, relative[i]);
+        const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 1");
+        ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 20, 0, 0, 0, 0, 0});
+    }
+    /* the trajectory settings are untouched */
+    m->props[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 = 90.0f;
+    m->props[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 = 10.0f;
+    ASSERT_SILENT(m, "ms 1 20 0 0");
+    (void)ASSERT_MOVE(m, "mq 1 0");
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_vel_limit"), "90\n");
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"), "10\n");
+}
+
+/* ---- mq under traj_mode 1 (trapezoid) and 2 (S-curve), spec 10.3 ----
+ *
+ * D = 90 deg, T = 2 s, a = 60 (r/min)/s, so A = 6a = 360 deg/s^2, A T = 720,
+ * A^2 T^2 = 518400.
+ * Trapezoid: 4AD = 129600, sqrt(518400 - 129600) = sqrt(388800) = 360 sqrt(3)
+ *   = 623.53829; V = 2AD / (AT + sqrt) = 64800 / 1343.53829 = 48.2308546 deg/s
+ *   (= 360 - 180 sqrt(3)), so vel_rpm = V/6 = 60 - 30 sqrt(3) = 8.03847577 r/min;
+ *   check: D/V + V/A = 1.8660254 + 0.1339746 = 2 s.
+ * S-curve: 8AD = 259200, sqrt(518400 - 259200) = sqrt(259200) = 360 sqrt(2)
+ *   = 509.11688; V = 64800 / 1229.11688 = 52.7207794 deg/s (= 180 - 90 sqrt(2)),
+ *   so vel_rpm = 30 - 15 sqrt(2) = 8.78679656 r/min; check in the vendor's
+ *   units: D/(6v) + 2v/a = 90/52.7207794 + 17.5735931/60 = 1.7071068 + 0.2928932
+ *   = 2 s (and D = 90 > 12 v^2/a = 15.44, so the cruise is reached).
+ * Both keep the acceleration: rate = a = 60 (r/min)/s. */
+#define HAND_TRAPEZOID_RPM 8.0384757729336805 /* 60 - 30 sqrt(3) */
+#define HAND_S_CURVE_RPM 8.7867965644035753   /* 30 - 15 sqrt(2) */
+
+static void assert_hand_worked(const mock_t *m, const daran_move_t *mv, float target, double rpm,
+                               double rate, unsigned given, int line)
+{
+    mock_check(mv->kind == Q && mv->given == given, m, __FILE__, line,
+               "expected a trapezoid with given %u, got kind %d given %u", given, (int)mv->kind,
+               (unsigned)mv->given);
+    mock_check(mv->pos_deg == target, m, __FILE__, line, "pos_deg %.9g", (double)mv->pos_deg);
+    /* float32 arithmetic: a few units in the last place */
+    mock_check(fabs(mv->vel_rpm - rpm) <= 4e-6 * rpm, m, __FILE__, line,
+               "vel_rpm: expected %.9g, got %.9g", rpm, (double)mv->vel_rpm);
+    mock_check(fabs(mv->rate - rate) <= 4e-6 * rate, m, __FILE__, line,
+               "rate: expected %.9g, got %.9g", rate, (double)mv->rate);
+}
+
+static void test_mq_trapezoid_cruise_is_the_hand_worked_value(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    assert_int_equal(m->props[DARAN_PROP_TRAJ_MODE].u32, 1); /* the mock's default */
+    ASSERT_SILENT(m, "ms 1 90 2 60");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    assert_hand_worked(m, mv, 90, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
+    check_timed_move(m, mv, 90, 90, 2, 60, __LINE__);
+    /* explicitly 1 is the same */
+    (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 1", DARAN_PROP_TRAJ_MODE);
+    ASSERT_SILENT(m, "ms 1 -90 2 60");
+    mv = ASSERT_MOVE(m, "mq 1 1");
+    assert_hand_worked(m, mv, 0, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
+}
+
+static void test_mq_s_curve_cruise_is_the_hand_worked_value(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
+    ASSERT_SILENT(m, "ms 1 90 2 60");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    assert_hand_worked(m, mv, 90, HAND_S_CURVE_RPM, 60, GV | GR, __LINE__);
+    /* relative and backwards: the distance is what counts */
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 100.0f;
+    ASSERT_SILENT(m, "ms 1 -90 2 60");
+    mv = ASSERT_MOVE(m, "mq 0 1");
+    assert_hand_worked(m, mv, 10, HAND_S_CURVE_RPM, 60, GV | GR, __LINE__);
+    /* the S-curve needs the faster cruise for the same arrival */
+    assert_true(HAND_S_CURVE_RPM > HAND_TRAPEZOID_RPM);
+    /* other numbers against the model in double */
+    static const float cases[][3] = {{120, 5, 10}, {30, 3, 10}, {1, 0.5f, 100}, {720, 10, 30}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
+        char line[64];
+        snprintf(line, sizeof line, "ms 1 %g %g %g", (double)cases[i][0], (double)cases[i][1],
+                 (double)cases[i][2]);
+        ASSERT_SILENT(m, line);
+        mv = ASSERT_MOVE(m, "mq 1 0");
+        timed_t t = timed_expect_shape(cases[i][0], cases[i][1], cases[i][2], true);
+        assert_true(t.feasible);
+        assert_close(m, mv->vel_rpm, t.vel_rpm, "S-curve vel_rpm", __LINE__);
+        assert_close(m, mv->rate, t.rate, "S-curve rate", __LINE__);
+    }
+}
+
+static void test_mq_s_curve_within_the_1e4_shortfall_runs_the_exact_triangle(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
+    /* D = 90, A = 360: the S-curve minimum is sqrt(8D/A) = sqrt(2) s; 1.4142
+     * falls short by 8AD/(AT)^2 - 1 = 1.9e-5 relative. Triangle: peak 2D/T,
+     * acceleration 8D/T^2 (the S-curve's mean acceleration is a/2). */
+    ASSERT_SILENT(m, "ms 1 90 1.4142 60");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    double T = 1.4142f;
+    assert_hand_worked(m, mv, 90, 2.0 * 90.0 / T / 6.0, 8.0 * 90.0 / (T * T) / 6.0, GV | GR,
+                       __LINE__);
+    /* the vendor's 17-digit minimum */
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
+    ASSERT_SILENT(m, "ms 1 90 1.4142135623730951 60 ");
+    mv = ASSERT_MOVE(m, "mq 1 0");
+    assert_close(m, mv->vel_rpm, 2.0 * 90.0 / 1.4142135623730951 / 6.0, "vel_rpm", __LINE__);
+    assert_close(m, mv->rate, 60.0, "rate", __LINE__);
+}
+
+static void test_mq_feasible_as_a_trapezoid_is_infeasible_as_an_s_curve(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    /* D = 90, A = 360, T = 1.4 s: A^2 T^2 = 254016 >= 4AD = 129600 (trapezoid)
+     * but < 8AD = 259200 by 2% (S-curve) */
+    ASSERT_SILENT(m, "ms 1 90 1.4 60");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    timed_t t = timed_expect(90, 1.4f, 60);
+    assert_close(m, mv->vel_rpm, t.vel_rpm, "trapezoid vel_rpm", __LINE__);
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
+    (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
+    ASSERT_SILENT(m, "ms 1 90 1.4 60");
+    ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
+    /* the vendor's trapezoid minimum 2 sqrt(D/A) is far too short for the S-curve */
+    ASSERT_SILENT(m, "ms 1 20 1.1547005383792515 10");
+    ASSERT_ERROR(m, "mq 0 0", "trajectory infeasible");
+    (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 1", DARAN_PROP_TRAJ_MODE);
+    mv = ASSERT_MOVE(m, "mq 0 0");
+    assert_close(m, mv->pos_deg, 20.0, "pos_deg", __LINE__);
+}
+
+/* The planner reads traj_mode through the HAL (D31). */
+static void test_mq_traj_mode_read_failure_answers_motor_fault_and_keeps_the_preset(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    ASSERT_SILENT(m, "ms 1 90 2 60");
+    mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_TRAJ_MODE);
+    ASSERT_ERROR(m, "mq 1 0", "motor fault");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    assert_hand_worked(m, mv, 90, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
+}
+
+static void test_mq_on_a_port_without_traj_mode_plans_a_trapezoid(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_TRAJ_MODE].u32 = 2;
+    ASSERT_SILENT(m, "ms 1 90 2 60");
+    mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_INVALID_PROPERTY, DARAN_PROP_TRAJ_MODE);
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    assert_hand_worked(m, mv, 90, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
+}
+
+static void test_q_and_mq_are_planned_by_the_drive_not_the_core(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    /* q passes its values on whatever traj_mode says: the HAL shapes the profile */
+    (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
+    const daran_move_t *mv = ASSERT_MOVE(m, "q 1 90 30 60");
+    ASSERT_MOVE_EQUALS(m, mv, {Q, GV | GR, 90, 30, 0, 60, 0, 0});
 }
 
 static void test_mt_starts_a_filtered_move_with_the_preset_bandwidth(void **state)
@@ -326,8 +659,29 @@ static void test_mt_starts_a_filtered_move_with_the_preset_bandwidth(void **stat
     ASSERT_SILENT(m, "ms 1 10 99 5");
     mv = ASSERT_MOVE(m, "mt 0 1");
     ASSERT_MOVE_EQUALS(m, mv, {F, GR, 20, 0, 0, 5, 0, 0});
+    /* spec 10.1: bandwidth 0 keeps the current one, as `t` does */
     ASSERT_SILENT(m, "ms 1 10 99 0");
+    mv = ASSERT_MOVE(m, "mt 1 0");
+    ASSERT_MOVE_EQUALS(m, mv, {F, 0, 10, 0, 0, 0, 0, 0});
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "5\n");
+    ASSERT_SILENT(m, "ms 1 10 0 -0");
+    mv = ASSERT_MOVE(m, "mt 0 1");
+    ASSERT_MOVE_EQUALS(m, mv, {F, 0, 20, 0, 0, 0, 0, 0});
+    ASSERT_SILENT(m, "ms 1 10 99 -1");
     ASSERT_ERROR(m, "mt 1 0", "value out of range");
+}
+
+static void test_mt_with_preset_bandwidth_0_is_the_vendor_set_angles_default(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 30.0f;
+    /* the vendor recording: ms 1 10 0 0 + mt 0 1 */
+    ASSERT_SILENT(m, "ms 1 10 0 0 ");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mt 0 1");
+    ASSERT_MOVE_EQUALS(m, mv, {F, 0, 40, 0, 0, 0, 0, 0});
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "20\n");
 }
 
 static void test_mp_starts_passthrough_with_the_preset_feed_forwards(void **state)
@@ -355,7 +709,16 @@ static void test_mv_starts_velocity_by_the_preset_mode(void **state)
     ASSERT_SILENT(m, "ms 1 20 3 2");
     mv = ASSERT_MOVE(m, "mv 0");
     ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, 20, 0, 3, 0, 0});
+    /* spec 10.1: ramp 0 holds the velocity setpoint */
     ASSERT_SILENT(m, "ms 1 20 0 2");
+    mv = ASSERT_MOVE(m, "mv 1");
+    ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, 20, 0, 0, 0, 0});
+    ASSERT_SILENT(m, "ms 1 60 -0 2");
+    mv = ASSERT_MOVE(m, "mv 0");
+    ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, 60, 0, 0, 0, 0});
+    assert_positive_zero(m, mv->rate, __LINE__);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.vel_ramp_rate"), "0\n");
+    ASSERT_SILENT(m, "ms 1 20 -1 2");
     ASSERT_ERROR(m, "mv 1", "value out of range");
     ASSERT_SILENT(m, "ms 1 20 0 7");
     ASSERT_ERROR(m, "mv 1", "invalid mode");
@@ -375,7 +738,16 @@ static void test_mc_starts_torque_by_the_preset_mode(void **state)
     ASSERT_SILENT(m, "ms 1 0.5 2 2");
     mv = ASSERT_MOVE(m, "mc 1");
     ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.5f, 2, 0, 0});
+    /* spec 10.1: ramp 0 holds the torque setpoint */
     ASSERT_SILENT(m, "ms 1 0.5 0 6");
+    mv = ASSERT_MOVE(m, "mc 1");
+    ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.5f, 0, 0, 0});
+    ASSERT_SILENT(m, "ms 1 0.05 -0 2");
+    mv = ASSERT_MOVE(m, "mc 0");
+    ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.05f, 0, 0, 0});
+    assert_positive_zero(m, mv->rate, __LINE__);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"), "0\n");
+    ASSERT_SILENT(m, "ms 1 0.5 -2 6");
     ASSERT_ERROR(m, "mc 1", "value out of range");
     ASSERT_SILENT(m, "ms 1 0.5 0 5");
     ASSERT_ERROR(m, "mc 1", "invalid mode");
@@ -441,43 +813,70 @@ static void test_reboot_clears_the_preset(void **state)
     ASSERT_ERROR(m, "mt 1 0", "no preset");
 }
 
-/* ---- vendor recordings ---- */
+/* ---- vendor recordings: every line accepted on a bus of three drives ---- */
 
-static int line_motor_id(const char *line)
+#define BUS_DRIVES 3
+
+/* The id a recording line addresses (D8, D9): field 1, the N of an axisN.
+ * path, or a system path's trailing id (0 when omitted). */
+static int line_motor_id(const char *line, char *word, size_t word_size)
 {
-    char word[8] = "", second[80] = "";
-    if (sscanf(line, "%7s %79s", word, second) < 2)
+    char text[DARAN_LINE_MAX + 1];
+    snprintf(text, sizeof text, "%s", line);
+    char *star = strchr(text, '*');
+    if (star != NULL)
+        *star = '\0';
+    char *fields[8];
+    int n = 0;
+    for (char *f = strtok(text, " \t\r"); f != NULL && n < 8; f = strtok(NULL, " \t\r"))
+        fields[n++] = f;
+    if (n < 2)
         return -1;
-    if (word[0] == 'r' || word[0] == 'w') {
-        if (strncmp(second, "axis", 4) == 0)
-            return second[4] - '0';
-        return 1; /* the recordings send their system reads with id 1 */
-    }
-    int id = -1;
-    sscanf(second, "%d", &id);
-    return id;
+    snprintf(word, word_size, "%s", fields[0]);
+    for (char *c = word; *c; c++)
+        *c = (char)(*c | 0x20);
+    bool rw = (word[0] == 'r' || word[0] == 'w') && word[1] == '\0';
+    if (!rw)
+        return atoi(fields[1]);
+    if (strncmp(fields[1], "axis", 4) == 0)
+        return atoi(fields[1] + 4);
+    return n == (word[0] == 'r' ? 3 : 4) ? atoi(fields[n - 1]) : 0;
 }
 
-static void replay(const char *const *lines, size_t n)
+static void replay(const char *name, const char *const *lines, size_t n)
 {
-    mock_t *m = mock_new();
-    m->props[DARAN_PROP_POS_ESTIMATE].f32 = 1.25f;
+    mock_t *bus[BUS_DRIVES];
+    for (int k = 0; k < BUS_DRIVES; k++) {
+        bus[k] = mock_new_slot(k, (uint32_t)(k + 1));
+        bus[k]->props[DARAN_PROP_POS_ESTIMATE].f32 = 1.25f * (float)(k + 1);
+    }
     for (size_t i = 0; i < n; i++) {
-        mock_send_line(m, lines[i]);
-        mock_check(strstr(m->out, "error") == NULL, m, __FILE__, __LINE__,
-                   "recording line %zu answered an error", i);
-        int id = line_motor_id(lines[i]);
-        if (id == 2 || id == 3) {
-            mock_check(m->out_len == 0 && m->n_calls == 0, m, __FILE__, __LINE__,
-                       "a line for drive %d must be silent and have no effect here", id);
-        }
         char word[8] = "";
-        sscanf(lines[i], "%7s", word);
+        int id = line_motor_id(lines[i], word, sizeof word);
+        mock_check(id >= 0 && id <= BUS_DRIVES, bus[0], __FILE__, __LINE__,
+                   "%s line %zu: no id of the bus", name, i);
         bool query = strchr("rfgie", word[0]) != NULL && word[1] == '\0';
-        if (query && id != 2 && id != 3)
-            mock_check(m->n_writes == 1, m, __FILE__, __LINE__, "a read answers one line");
-        if (!query)
-            mock_check(m->out_len == 0, m, __FILE__, __LINE__, "a command is silent on success");
+        /* the same line reaches every drive of the bus */
+        for (int k = 0; k < BUS_DRIVES; k++) {
+            mock_t *m = bus[k];
+            mock_send_line(m, lines[i]);
+            mock_check(strstr(m->out, "error") == NULL, m, __FILE__, __LINE__,
+                       "%s line %zu on drive %d answered an error", name, i, k + 1);
+            bool mine = id == 0 || id == k + 1;
+            if (!mine) {
+                mock_check(m->out_len == 0 && m->n_calls == 0, m, __FILE__, __LINE__,
+                           "%s line %zu: a line for drive %d must be silent and have no effect "
+                           "on drive %d", name, i, id, k + 1);
+            } else if (query) {
+                size_t want = word[0] == 'e' ? 7u : 1u;
+                mock_check(m->n_writes == want && m->n_calls == 0, m, __FILE__, __LINE__,
+                           "%s line %zu: a read answers %zu line(s) on drive %d", name, i, want,
+                           k + 1);
+            } else {
+                mock_check(m->out_len == 0, m, __FILE__, __LINE__,
+                           "%s line %zu: a command is silent on success", name, i);
+            }
+        }
     }
 }
 
@@ -485,14 +884,66 @@ static void test_every_line_of_the_vendor_python_recording_is_accepted(void **st
 {
     (void)state;
     SKIP_IF_NO_MULTI();
-    replay(recording_python, sizeof recording_python / sizeof recording_python[0]);
+    replay("vendor-python-client", recording_python,
+           sizeof recording_python / sizeof recording_python[0]);
 }
 
 static void test_every_line_of_the_vendor_stm32_recording_is_accepted(void **state)
 {
     (void)state;
     SKIP_IF_NO_MULTI();
-    replay(recording_stm32, sizeof recording_stm32 / sizeof recording_stm32[0]);
+    replay("vendor-stm32-client", recording_stm32,
+           sizeof recording_stm32 / sizeof recording_stm32[0]);
+}
+
+static void test_every_line_of_the_vendor_python_defaults_recording_is_accepted(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    replay("vendor-python-defaults", recording_python_defaults,
+           sizeof recording_python_defaults / sizeof recording_python_defaults[0]);
+}
+
+static void test_the_three_recordings_run_back_to_back_on_one_bus(void **state)
+{
+    (void)state;
+    SKIP_IF_NO_MULTI();
+    /* one bus for all three: state left by one recording must not trip the next */
+    static const char *all[sizeof recording_python / sizeof recording_python[0] +
+                           sizeof recording_stm32 / sizeof recording_stm32[0] +
+                           sizeof recording_python_defaults / sizeof recording_python_defaults[0]];
+    size_t n = 0;
+    for (size_t i = 0; i < sizeof recording_python / sizeof recording_python[0]; i++)
+        all[n++] = recording_python[i];
+    for (size_t i = 0; i < sizeof recording_stm32 / sizeof recording_stm32[0]; i++)
+        all[n++] = recording_stm32[i];
+    for (size_t i = 0; i < sizeof recording_python_defaults / sizeof recording_python_defaults[0]; i++)
+        all[n++] = recording_python_defaults[i];
+    replay("all recordings", all, n);
+}
+
+static void test_each_read_of_the_defaults_recording_answers_one_number(void **state)
+{
+    (void)state;
+    /* every `r` line of vendor-python-defaults (each path of the vendor's
+     * table) answers one number, never an error: what the vendor's client
+     * parses with float() or int() */
+    mock_t *m = mock_new();
+    size_t reads = 0;
+    for (size_t i = 0; i < sizeof recording_python_defaults / sizeof recording_python_defaults[0]; i++) {
+        const char *line = recording_python_defaults[i];
+        if (strncmp(line, "r ", 2) != 0)
+            continue;
+        const char *reply = ASSERT_QUERY(m, line);
+        size_t value_len = strcspn(reply, " \n");
+        bool checksummed = strchr(line, '*') != NULL;
+        mock_check(value_len > 0 && strspn(reply, "-0123456789.e+") == value_len &&
+                       (checksummed ? reply[value_len] == ' ' : reply[value_len] == '\n'),
+                   m, __FILE__, __LINE__, "one number");
+        reads++;
+    }
+    /* 159 vendor paths, trajectory_done also read by the default-argument calls */
+    assert_true(reads >= 159);
 }
 
 static void test_vendor_python_id_discovery_read_answers_the_id(void **state)
@@ -516,14 +967,28 @@ int main(void)
     ADD(test_omitted_optional_values_are_not_given);
     ADD(test_torque_mode_2_is_taken_as_a_ramp);
     ADD(test_motion_ranges_are_checked);
+    ADD(test_t_with_bandwidth_0_is_accepted_and_keeps_the_bandwidth);
+    ADD(test_q_with_acceleration_0_is_accepted_as_a_step_without_cruise);
+    ADD(test_v_mode_2_with_ramp_0_is_accepted_with_rate_0);
+    ADD(test_c_ramp_0_is_accepted_with_rate_0_in_modes_6_and_2);
     ADD(test_spec_mq_example_moves_each_drive_to_arrive_together);
     ADD(test_mq_absolute_uses_the_distance_from_the_setpoint);
     ADD(test_infeasible_mq_is_refused_with_no_motion);
     ADD(test_mq_within_the_1e4_shortfall_runs_the_exact_triangle);
     ADD(test_mq_with_the_vendor_17_digit_minimum_duration_is_accepted);
     ADD(test_mq_with_zero_distance_is_accepted);
-    ADD(test_mq_duration_and_accel_must_be_positive);
+    ADD(test_mq_negative_duration_or_accel_is_out_of_range);
+    ADD(test_mq_zero_duration_or_accel_with_a_distance_is_infeasible);
+    ADD(test_mq_zero_duration_or_accel_at_zero_distance_is_a_trapezoid_in_place);
+    ADD(test_mq_trapezoid_cruise_is_the_hand_worked_value);
+    ADD(test_mq_s_curve_cruise_is_the_hand_worked_value);
+    ADD(test_mq_s_curve_within_the_1e4_shortfall_runs_the_exact_triangle);
+    ADD(test_mq_feasible_as_a_trapezoid_is_infeasible_as_an_s_curve);
+    ADD(test_mq_traj_mode_read_failure_answers_motor_fault_and_keeps_the_preset);
+    ADD(test_mq_on_a_port_without_traj_mode_plans_a_trapezoid);
+    ADD(test_q_and_mq_are_planned_by_the_drive_not_the_core);
     ADD(test_mt_starts_a_filtered_move_with_the_preset_bandwidth);
+    ADD(test_mt_with_preset_bandwidth_0_is_the_vendor_set_angles_default);
     ADD(test_mp_starts_passthrough_with_the_preset_feed_forwards);
     ADD(test_mv_starts_velocity_by_the_preset_mode);
     ADD(test_mc_starts_torque_by_the_preset_mode);
@@ -534,6 +999,9 @@ int main(void)
     ADD(test_reboot_clears_the_preset);
     ADD(test_every_line_of_the_vendor_python_recording_is_accepted);
     ADD(test_every_line_of_the_vendor_stm32_recording_is_accepted);
+    ADD(test_every_line_of_the_vendor_python_defaults_recording_is_accepted);
+    ADD(test_the_three_recordings_run_back_to_back_on_one_bus);
+    ADD(test_each_read_of_the_defaults_recording_answers_one_number);
     ADD(test_vendor_python_id_discovery_read_answers_the_id);
     return mock_suite_run(&s, "commands");
 }

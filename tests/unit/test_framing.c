@@ -464,7 +464,7 @@ static void test_process_line_returns_the_error_it_answered(void **state)
     make_padded(buf, "f 1", DARAN_LINE_MAX + 1, "");
     assert_int_equal(daran_process_line(&m->drive, buf, DARAN_LINE_MAX + 1), DARAN_ERR_LINE_TOO_LONG);
     ASSERT_REPLY(m, "error: line too long\n");
-    assert_int_equal(daran_process_line(&m->drive, "t 1 10 0 0", 10), DARAN_ERR_OUT_OF_RANGE);
+    assert_int_equal(daran_process_line(&m->drive, "t 1 10 0 -1", 11), DARAN_ERR_OUT_OF_RANGE);
     ASSERT_REPLY(m, "error: value out of range\n");
     ASSERT_NO_EFFECT(m);
 }

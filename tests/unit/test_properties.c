@@ -1,7 +1,9 @@
 /* Unit tests of `r` and `w` over every property of daran_properties.h (read
  * formatting per type, write, read-only refusal, range edges on both sides,
- * the axisN. and trailing-id forms of D8/D9), plus the float reply format of
- * spec section 4. The rows come from the public X-macro list itself. */
+ * the axisN. and trailing-id forms of D8/D9, paths one step away from each
+ * real one), the s32 grammar (D34), the error registers (D33), plus the float
+ * reply format of spec section 4. The rows come from the public X-macro list
+ * itself. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -51,9 +53,29 @@ static void test_the_property_list_has_every_spec_property(void **state)
 {
     (void)state;
     assert_int_equal(N_ROWS, DARAN_PROP_COUNT);
-    assert_int_equal(N_ROWS, 53);
+    /* spec 10.2: the vendor's 159 paths, serial_number, config.enable_watchdog,
+     * config.watchdog_timeout and config_warnings (D32) */
+    assert_int_equal(N_ROWS, 163);
     for (size_t i = 0; i < N_ROWS; i++)
         assert_int_equal(rows[i].id, (daran_prop_t)i);
+}
+
+static void test_every_path_is_unique_within_its_scope(void **state)
+{
+    (void)state;
+    for (size_t i = 0; i < N_ROWS; i++)
+        for (size_t j = i + 1; j < N_ROWS; j++)
+            if (rows[i].scope == rows[j].scope && strcmp(rows[i].path, rows[j].path) == 0)
+                fail_msg("\"%s\" twice", rows[i].path);
+}
+
+/* Is @p path a row of @p scope? */
+static bool is_real_path(int scope, const char *path)
+{
+    for (size_t i = 0; i < N_ROWS; i++)
+        if (rows[i].scope == scope && strcmp(rows[i].path, path) == 0)
+            return true;
+    return false;
 }
 
 /* ---- read ---- */
@@ -67,6 +89,7 @@ static const char *store_sample(mock_t *m, const prop_row_t *p)
             return "1";
         m->props[p->id].u32 = 4000000000u;
         return "4000000000";
+    case DARAN_TYPE_S32: m->props[p->id].s32 = -123456; return "-123456";
     case DARAN_TYPE_U64: m->props[p->id].u64 = UINT64_MAX; return "18446744073709551615";
     case DARAN_TYPE_BOOL: m->props[p->id].u32 = 1; return "1";
     }
@@ -108,6 +131,20 @@ static void read_case(void **state)
         snprintf(line, sizeof line, "r %s 1 1", p->path);
         ASSERT_ERROR(m, line, "invalid command format");
     }
+    /* a drive with the highest id: its own N in axisN. or the trailing id */
+    m = mock_new_id(DARAN_MOTOR_ID_MAX);
+    text = store_sample(m, p);
+    char max_id[8];
+    snprintf(max_id, sizeof max_id, "%d", DARAN_MOTOR_ID_MAX);
+    if (p->id == DARAN_PROP_CAN_NODE_ID)
+        text = max_id;
+    mock_reply_line(want, sizeof want, text, false);
+    line_for(line, sizeof line, p, "r", NULL, DARAN_MOTOR_ID_MAX);
+    assert_string_equal(ASSERT_QUERY(m, line), want);
+    line_for(line, sizeof line, p, "r", NULL, 0);
+    assert_string_equal(ASSERT_QUERY(m, line), want);
+    line_for(line, sizeof line, p, "r", NULL, 1);
+    ASSERT_SILENT(m, line);
 }
 
 static void test_bools_read_as_0_and_1(void **state)
@@ -264,18 +301,33 @@ static void test_random_floats_read_back_bit_exact_in_shortest_form(void **state
 
 /* ---- write ---- */
 
+/* A value inside the row's range, written as the reply reads it back. */
 static const char *write_sample(const prop_row_t *p)
 {
     switch (p->range) {
-    case DARAN_RANGE_NONE: return "-12.5";
-    case DARAN_RANGE_NON_NEGATIVE:
-    case DARAN_RANGE_POSITIVE: return "2.5";
+    case DARAN_RANGE_NONE:
+        if (p->type == DARAN_TYPE_U32)
+            return "4000000000";
+        return p->type == DARAN_TYPE_S32 ? "-123456" : "-12.5";
+    case DARAN_RANGE_NON_NEGATIVE: return "2.5";
+    case DARAN_RANGE_POSITIVE: return p->type == DARAN_TYPE_S32 ? "8192" : "2.5";
+    case DARAN_RANGE_NON_POSITIVE: return "-2.5";
     case DARAN_RANGE_BOOL: return "1";
+    case DARAN_RANGE_ZERO: return "0";
     case DARAN_RANGE_NODE_ID: return "7";
     case DARAN_RANGE_UART_BAUD: return "9600";
     case DARAN_RANGE_CAN_BAUD: return "250000";
+    case DARAN_RANGE_CAN_PROTOCOL: return "1";
     case DARAN_RANGE_AXIS_STATE: return "1";
+    case DARAN_RANGE_CONTROL_MODE: return "2";
+    case DARAN_RANGE_INPUT_MODE: return "5";
+    case DARAN_RANGE_TRAJ_MODE: return "2";
+    case DARAN_RANGE_DIRECTION: return "-1";
+    case DARAN_RANGE_MOTOR_TYPE: return "2";
+    case DARAN_RANGE_POLE_PAIRS: return "21";
+    case DARAN_RANGE_COUNT: break;
     }
+    fail_msg("%s: no write sample for range %d", p->name, (int)p->range);
     return "";
 }
 
@@ -286,6 +338,10 @@ static void check_value(const mock_t *m, const prop_row_t *p, daran_value_t v, c
         float want = strtof(text, NULL);
         mock_check(memcmp(&v.f32, &want, sizeof want) == 0, m, __FILE__, line,
                    "%s: expected %a, got %a", p->name, (double)want, (double)v.f32);
+    } else if (p->type == DARAN_TYPE_S32) {
+        long want = strtol(text, NULL, 10);
+        mock_check(v.s32 == want, m, __FILE__, line, "%s: expected %ld, got %ld", p->name, want,
+                   (long)v.s32);
     } else {
         unsigned long want = strtoul(text, NULL, 10);
         mock_check(v.u32 == want, m, __FILE__, line, "%s: expected %lu, got %lu", p->name, want,
@@ -343,6 +399,7 @@ static void read_only_case(void **state)
 {
     const prop_row_t *p = *state;
     mock_t *m = mock_new();
+    const char *text = store_sample(m, p);
     char line[160];
     line_for(line, sizeof line, p, "w", "1", 1);
     ASSERT_ERROR(m, line, "read only property");
@@ -351,6 +408,17 @@ static void read_only_case(void **state)
     /* the property is checked before the value */
     line_for(line, sizeof line, p, "w", "abc", 1);
     ASSERT_ERROR(m, line, "read only property");
+    /* a value of its own type and a checksummed line are refused the same way */
+    line_for(line, sizeof line, p, "w", text, 1);
+    ASSERT_ERROR(m, line, "read only property");
+    char cline[180], want[64];
+    mock_send_line(m, mock_with_checksum(cline, sizeof cline, line));
+    ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "error: read only property", true));
+    ASSERT_NO_EFFECT(m);
+    /* and the value it held reads back unchanged */
+    line_for(line, sizeof line, p, "r", NULL, 1);
+    mock_reply_line(want, sizeof want, text, false);
+    assert_string_equal(ASSERT_QUERY(m, line), want);
 }
 
 /* ---- range edges ---- */
@@ -380,20 +448,84 @@ static const edge_t edges_can[] = {
     {"0", false}, {"2000000", false}, {"125001", false}, {NULL, false}};
 static const edge_t edges_state[] = {{"1", true}, {"8", true}, {"0", false}, {"2", false},
                                      {"9", false}, {"3", false}, {NULL, false}};
+/* the ranges of the vendor's whole table (spec 10.2, D32-D34) */
+static const edge_t edges_non_positive[] = {
+    {"0", true}, {"-0", true}, {"-1e-45", true}, {"-3.4028235e38", true}, {"1e-45", false},
+    {"1", false}, {"3.4028235e38", false}, {NULL, false}};
+static const edge_t edges_u32_any[] = {
+    {"0", true}, {"4294967295", true}, {"1.0", true}, {"4294967296", false}, {"-1", false},
+    {NULL, false}};
+static const edge_t edges_zero[] = {
+    {"0", true}, {"-0", true}, {"0.0", true}, {"1", false}, {"2", false},
+    {"4294967295", false}, {"4294967296", false}, {"-1", false}, {NULL, false}};
+static const edge_t edges_can_protocol[] = {{"0", true}, {"1", true}, {"2", false},
+                                            {"-1", false}, {"4294967295", false}, {NULL, false}};
+static const edge_t edges_control_mode[] = {{"1", true}, {"2", true}, {"3", true}, {"0", false},
+                                            {"4", false}, {"-1", false}, {NULL, false}};
+static const edge_t edges_input_mode[] = {
+    {"1", true},  {"2", true},  {"3", true},  {"5", true},  {"6", true},
+    {"9", true},  {"0", false}, {"4", false}, {"7", false}, {"8", false},
+    {"10", false}, {"-1", false}, {NULL, false}};
+static const edge_t edges_traj_mode[] = {{"1", true}, {"2", true}, {"0", false}, {"3", false},
+                                         {"-1", false}, {NULL, false}};
+static const edge_t edges_motor_type[] = {{"0", true}, {"2", true}, {"3", true}, {"1", false},
+                                          {"4", false}, {"-1", false}, {NULL, false}};
+static const edge_t edges_s32_any[] = {
+    {"-2147483648", true}, {"2147483647", true}, {"0", true}, {"-1", true},
+    {"2147483648", false}, {"-2147483649", false}, {"4294967295", false}, {NULL, false}};
+static const edge_t edges_s32_positive[] = {
+    {"1", true}, {"2147483647", true}, {"0", false}, {"-0", false}, {"-1", false},
+    {"2147483648", false}, {"-2147483648", false}, {NULL, false}};
+static const edge_t edges_direction[] = {{"-1", true}, {"1", true}, {"0", false}, {"2", false},
+                                         {"-2", false}, {"4294967295", false}, {NULL, false}};
+static const edge_t edges_pole_pairs[] = {{"1", true}, {"128", true}, {"0", false},
+                                          {"129", false}, {"-1", false}, {NULL, false}};
 
-static const edge_t *edges_for(daran_range_t r)
+static const edge_t *edges_for(const prop_row_t *p)
 {
-    switch (r) {
-    case DARAN_RANGE_NONE: return edges_none;
+    switch (p->range) {
+    case DARAN_RANGE_NONE:
+        if (p->type == DARAN_TYPE_U32)
+            return edges_u32_any;
+        return p->type == DARAN_TYPE_S32 ? edges_s32_any : edges_none;
     case DARAN_RANGE_NON_NEGATIVE: return edges_non_negative;
-    case DARAN_RANGE_POSITIVE: return edges_positive;
+    case DARAN_RANGE_POSITIVE: return p->type == DARAN_TYPE_S32 ? edges_s32_positive : edges_positive;
+    case DARAN_RANGE_NON_POSITIVE: return edges_non_positive;
     case DARAN_RANGE_BOOL: return edges_bool;
+    case DARAN_RANGE_ZERO: return edges_zero;
     case DARAN_RANGE_NODE_ID: return edges_node_id;
     case DARAN_RANGE_UART_BAUD: return edges_uart;
     case DARAN_RANGE_CAN_BAUD: return edges_can;
+    case DARAN_RANGE_CAN_PROTOCOL: return edges_can_protocol;
     case DARAN_RANGE_AXIS_STATE: return edges_state;
+    case DARAN_RANGE_CONTROL_MODE: return edges_control_mode;
+    case DARAN_RANGE_INPUT_MODE: return edges_input_mode;
+    case DARAN_RANGE_TRAJ_MODE: return edges_traj_mode;
+    case DARAN_RANGE_DIRECTION: return edges_direction;
+    case DARAN_RANGE_MOTOR_TYPE: return edges_motor_type;
+    case DARAN_RANGE_POLE_PAIRS: return edges_pole_pairs;
+    case DARAN_RANGE_COUNT: break;
     }
+    fail_msg("%s: no edges for range %d", p->name, (int)p->range);
     return edges_none;
+}
+
+/* Float ranges belong to f32 rows, integer ranges to integer rows: a row that
+ * mixed them would be checked by rules that cannot hold. */
+static void test_every_row_has_a_range_of_its_type(void **state)
+{
+    (void)state;
+    for (size_t i = 0; i < N_ROWS; i++) {
+        const prop_row_t *p = &rows[i];
+        bool float_range = p->range == DARAN_RANGE_NONE || p->range == DARAN_RANGE_NON_NEGATIVE ||
+                           p->range == DARAN_RANGE_POSITIVE || p->range == DARAN_RANGE_NON_POSITIVE;
+        if (p->type == DARAN_TYPE_F32 && !float_range)
+            fail_msg("%s: f32 with an integer range %d", p->name, (int)p->range);
+        if (p->type == DARAN_TYPE_BOOL && p->range != DARAN_RANGE_BOOL)
+            fail_msg("%s: bool without the 0|1 range", p->name);
+        if (p->type == DARAN_TYPE_U64 && p->access != ACCESS_RO)
+            fail_msg("%s: a writable u64 has no range rule", p->name);
+    }
 }
 
 static void range_case(void **state)
@@ -401,7 +533,7 @@ static void range_case(void **state)
     const prop_row_t *p = *state;
     mock_t *m = mock_new();
     char line[160];
-    for (const edge_t *e = edges_for(p->range); e->text; e++) {
+    for (const edge_t *e = edges_for(p); e->text; e++) {
         /* id 0 keeps addressing this drive even after a node-id write */
         line_for(line, sizeof line, p, "w", e->text, 0);
         if (e->ok) {
@@ -483,11 +615,359 @@ static void test_node_id_write_changes_the_address(void **state)
     assert_string_equal(ASSERT_QUERY(m, "f 1"), "0 0\n");
 }
 
+/* ---- paths one step away from a real one ---- */
+
+/* `r` and `w` of a path that is not a row answer invalid property, in the
+ * row's own form (axisN. or trailing id), before the value is looked at. */
+static void assert_not_a_path(mock_t *m, int scope, const char *variant)
+{
+    if (is_real_path(scope, variant) || variant[0] == '\0' || strpbrk(variant, " \t*") != NULL)
+        return;
+    char line[200];
+    if (scope == SCOPE_AXIS) {
+        snprintf(line, sizeof line, "r axis1.%s", variant);
+        ASSERT_ERROR(m, line, "invalid property");
+        snprintf(line, sizeof line, "w axis1.%s 0", variant);
+        ASSERT_ERROR(m, line, "invalid property");
+        snprintf(line, sizeof line, "w axis0.%s abc", variant);
+        ASSERT_ERROR(m, line, "invalid property");
+    } else {
+        snprintf(line, sizeof line, "r %s 1", variant);
+        ASSERT_ERROR(m, line, "invalid property");
+        snprintf(line, sizeof line, "r %s", variant);
+        ASSERT_ERROR(m, line, "invalid property");
+        snprintf(line, sizeof line, "w %s 0 1", variant);
+        ASSERT_ERROR(m, line, "invalid property");
+    }
+}
+
+static void near_path_case(void **state)
+{
+    const prop_row_t *p = *state;
+    mock_t *m = mock_new();
+    char v[160];
+    size_t n = strlen(p->path);
+    /* a prefix, one character more, the last / first / middle character changed */
+    snprintf(v, sizeof v, "%.*s", (int)(n - 1), p->path);
+    assert_not_a_path(m, p->scope, v);
+    snprintf(v, sizeof v, "%sx", p->path);
+    assert_not_a_path(m, p->scope, v);
+    snprintf(v, sizeof v, "%s", p->path);
+    v[n - 1] = v[n - 1] == 'x' ? 'y' : 'x';
+    assert_not_a_path(m, p->scope, v);
+    snprintf(v, sizeof v, "%s", p->path);
+    v[0] = (char)(v[0] ^ 0x20); /* paths are case-sensitive */
+    assert_not_a_path(m, p->scope, v);
+    snprintf(v, sizeof v, "%s", p->path);
+    v[n / 2] = v[n / 2] == '.' ? '_' : (v[n / 2] == 'q' ? 'r' : 'q');
+    assert_not_a_path(m, p->scope, v);
+    /* one character left out in the middle, two swapped */
+    snprintf(v, sizeof v, "%.*s%s", (int)(n / 2), p->path, p->path + n / 2 + 1);
+    assert_not_a_path(m, p->scope, v);
+    snprintf(v, sizeof v, "%s", p->path);
+    char t = v[n - 1];
+    v[n - 1] = v[n - 2];
+    v[n - 2] = t;
+    assert_not_a_path(m, p->scope, v);
+    /* an extra segment, a segment left out, a leading or doubled dot */
+    snprintf(v, sizeof v, "%s.x", p->path);
+    assert_not_a_path(m, p->scope, v);
+    snprintf(v, sizeof v, "%s.", p->path);
+    assert_not_a_path(m, p->scope, v);
+    snprintf(v, sizeof v, ".%s", p->path);
+    assert_not_a_path(m, p->scope, v);
+    const char *dot = strrchr(p->path, '.');
+    if (dot != NULL) {
+        snprintf(v, sizeof v, "%.*s", (int)(dot - p->path), p->path);
+        assert_not_a_path(m, p->scope, v);
+        snprintf(v, sizeof v, "%s", dot + 1);
+        assert_not_a_path(m, p->scope, v);
+        snprintf(v, sizeof v, "%.*s.%s", (int)(dot - p->path), p->path, dot);
+        assert_not_a_path(m, p->scope, v);
+    }
+    /* the other scope's form: an axis path with a trailing id, a system path behind axisN. */
+    assert_not_a_path(m, p->scope == SCOPE_AXIS ? SCOPE_SYSTEM : SCOPE_AXIS, p->path);
+    /* the axis prefix written into the path again */
+    if (p->scope == SCOPE_AXIS) {
+        snprintf(v, sizeof v, "axis1.%s", p->path);
+        assert_not_a_path(m, SCOPE_AXIS, v);
+    }
+}
+
+/* Lookup hashes a name onto the one row it can be, then compares that row's
+ * segments in full. Names that hash onto a row while only extending it by a
+ * segment, or spelling its dots as other characters, must still be refused:
+ * many variants per row make sure some land on the row they imitate. */
+static bool refused_as_invalid_property(mock_t *m, int scope, const char *variant)
+{
+    char line[200];
+    int n = scope == SCOPE_AXIS ? snprintf(line, sizeof line, "r axis1.%s", variant)
+                                : snprintf(line, sizeof line, "r %s 1", variant);
+    mock_clear(m);
+    daran_result_t r = daran_process_line(&m->drive, line, (size_t)n);
+    return r == DARAN_ERR_INVALID_PROPERTY && m->n_calls == 0 &&
+           strcmp(m->out, "error: invalid property\n") == 0;
+}
+
+static void test_names_that_hash_onto_a_row_are_compared_in_full(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    /* the separators a dot may be mistaken for: printable, not blank, '.' or '*' */
+    char seps[96];
+    size_t n_seps = 0;
+    for (int c = 0x21; c < 0x7F; c++)
+        if (c != '.' && c != '*')
+            seps[n_seps++] = (char)c;
+    for (size_t i = 0; i < N_ROWS; i++) {
+        const prop_row_t *p = &rows[i];
+        char v[160];
+        for (unsigned k = 0; k < 1024; k++) {
+            snprintf(v, sizeof v, "%s.%u", p->path, k);
+            mock_check(refused_as_invalid_property(m, p->scope, v), m, __FILE__, __LINE__,
+                       "\"%s\" must be an invalid property", v);
+        }
+        if (strchr(p->path, '.') == NULL)
+            continue;
+        for (unsigned k = 0; k < 512; k++) {
+            snprintf(v, sizeof v, "%s", p->path);
+            unsigned digits = k;
+            for (char *c = v; *c; c++) {
+                if (*c == '.') {
+                    *c = seps[digits % n_seps];
+                    digits /= (unsigned)n_seps;
+                }
+            }
+            if (digits != 0 || is_real_path(p->scope, v))
+                continue; /* every combination of this path's dots is done */
+            mock_check(refused_as_invalid_property(m, p->scope, v), m, __FILE__, __LINE__,
+                       "\"%s\" must be an invalid property", v);
+        }
+    }
+}
+
+/* ---- s32 (D34) ---- */
+
+static void test_s32_direction_minus_1_is_written_and_read_back_with_its_sign(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    daran_value_t v = ASSERT_SET(m, "w axis1.motor.config.direction -1", DARAN_PROP_MOTOR_DIRECTION);
+    assert_int_equal(v.s32, -1);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.motor.config.direction"), "-1\n");
+    v = ASSERT_SET(m, "w axis1.motor.config.direction 1", DARAN_PROP_MOTOR_DIRECTION);
+    assert_int_equal(v.s32, 1);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.motor.config.direction"), "1\n");
+}
+
+static void test_s32_direction_0_and_2_are_out_of_range_with_no_effect(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_ERROR(m, "w axis1.motor.config.direction 0", "value out of range");
+    ASSERT_ERROR(m, "w axis1.motor.config.direction 2", "value out of range");
+    ASSERT_ERROR(m, "w axis1.motor.config.direction -0", "value out of range");
+    ASSERT_ERROR(m, "w axis1.motor.config.direction -2", "value out of range");
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.motor.config.direction"), "1\n");
+}
+
+static void test_s32_integral_float_minus_1_point_0_is_accepted_as_minus_1(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    daran_value_t v = ASSERT_SET(m, "w axis1.motor.config.direction -1.0", DARAN_PROP_MOTOR_DIRECTION);
+    assert_int_equal(v.s32, -1);
+    v = ASSERT_SET(m, "w axis1.motor.config.direction -10e-1", DARAN_PROP_MOTOR_DIRECTION);
+    assert_int_equal(v.s32, -1);
+    v = ASSERT_SET(m, "w axis1.motor.config.direction -1.000000", DARAN_PROP_MOTOR_DIRECTION);
+    assert_int_equal(v.s32, -1);
+    v = ASSERT_SET(m, "w axis1.motor.config.direction +1", DARAN_PROP_MOTOR_DIRECTION);
+    assert_int_equal(v.s32, 1);
+    v = ASSERT_SET(m, "w axis1.config.extra_setting.stored_turns_counts -0", DARAN_PROP_STORED_TURNS_COUNTS);
+    assert_int_equal(v.s32, 0);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.config.extra_setting.stored_turns_counts"), "0\n");
+}
+
+static void test_s32_non_integers_and_doubled_signs_are_invalid_values(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    static const char *const bad[] = {"-1.5", "--1", "-+1", "+-1", "-", "- 1", "1-", "-x",
+                                      "-1e", "-nan", "-inf", "-0x1", "-.5", "0.5"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char line[96];
+        snprintf(line, sizeof line, "w axis1.motor.config.direction %s", bad[i]);
+        if (strchr(bad[i], ' ') != NULL)
+            ASSERT_ERROR(m, line, "invalid command format");
+        else
+            ASSERT_ERROR(m, line, "invalid value");
+        snprintf(line, sizeof line, "w axis1.config.extra_setting.stored_turns_counts %s", bad[i]);
+        if (strchr(bad[i], ' ') == NULL)
+            ASSERT_ERROR(m, line, "invalid value");
+    }
+}
+
+static void test_s32_beyond_32_bits_is_out_of_range(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    static const char *const far[] = {"2147483648", "-2147483649", "4294967295", "4294967296",
+                                      "-4294967296", "18446744073709551615",
+                                      "-18446744073709551616", "1e39", "-1e39", "2.147483648e9"};
+    for (size_t i = 0; i < sizeof far / sizeof far[0]; i++) {
+        char line[96];
+        snprintf(line, sizeof line, "w axis1.config.extra_setting.stored_turns_counts %s", far[i]);
+        ASSERT_ERROR(m, line, "value out of range");
+        snprintf(line, sizeof line, "w axis1.motor.config.direction %s", far[i]);
+        ASSERT_ERROR(m, line, "value out of range");
+    }
+    /* the two ends themselves are values */
+    daran_value_t v = ASSERT_SET(m, "w axis1.config.extra_setting.stored_turns_counts -2147483648",
+                                 DARAN_PROP_STORED_TURNS_COUNTS);
+    assert_true(v.s32 == INT32_MIN);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.config.extra_setting.stored_turns_counts"),
+                        "-2147483648\n");
+    v = ASSERT_SET(m, "w axis1.config.extra_setting.stored_turns_counts 2147483647",
+                   DARAN_PROP_STORED_TURNS_COUNTS);
+    assert_true(v.s32 == INT32_MAX);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.config.extra_setting.stored_turns_counts"),
+                        "2147483647\n");
+}
+
+static void test_s32_reads_are_decimal_with_a_minus_when_negative(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    static const struct { int32_t value; const char *text; } cases[] = {
+        {0, "0"}, {1, "1"}, {-1, "-1"}, {INT32_MAX, "2147483647"}, {INT32_MIN, "-2147483648"},
+        {-16384, "-16384"}, {1000000, "1000000"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char want[32];
+        mock_reply_line(want, sizeof want, cases[i].text, false);
+        m->props[DARAN_PROP_ENCODER_POS_ABS].s32 = cases[i].value;
+        assert_string_equal(ASSERT_QUERY(m, "r axis1.encoder.pos_abs"), want);
+        m->props[DARAN_PROP_ENCODER_TURN_ABS].s32 = cases[i].value;
+        assert_string_equal(ASSERT_QUERY(m, "r axis0.encoder.turn_abs"), want);
+        char line[48], cline[64];
+        mock_reply_line(want, sizeof want, cases[i].text, true);
+        snprintf(line, sizeof line, "r axis1.encoder.pos_abs");
+        assert_string_equal(ASSERT_QUERY(m, mock_with_checksum(cline, sizeof cline, line)), want);
+    }
+}
+
+static void test_a_u32_takes_no_sign(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    /* the s32 sign rule is s32's alone: "-1" is below a u32's range (D7) */
+    ASSERT_ERROR(m, "w can.config.heartbeat_ms -1 1", "value out of range");
+    ASSERT_ERROR(m, "w can.config.heartbeat_ms --1 1", "invalid value");
+    daran_value_t v = ASSERT_SET(m, "w can.config.heartbeat_ms -0 1", DARAN_PROP_CAN_HEARTBEAT_MS);
+    assert_int_equal(v.u32, 0);
+    v = ASSERT_SET(m, "w can.config.heartbeat_ms 4294967295 1", DARAN_PROP_CAN_HEARTBEAT_MS);
+    assert_int_equal(v.u32, UINT32_MAX);
+}
+
+/* ---- error registers (D33): writable with 0 only ---- */
+
+static void error_register_case(void **state)
+{
+    const prop_row_t *p = *state;
+    mock_t *m = mock_new();
+    m->props[p->id].u32 = 0x4000u;
+    char line[160], want[32];
+    mock_reply_line(want, sizeof want, "16384", false);
+    static const char *const refused[] = {"1", "16384", "4294967295", "-1", "4294967296", "1e39"};
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+        line_for(line, sizeof line, p, "w", refused[i], 1);
+        ASSERT_ERROR(m, line, "value out of range");
+        line_for(line, sizeof line, p, "w", refused[i], 0);
+        ASSERT_ERROR(m, line, "value out of range");
+    }
+    line_for(line, sizeof line, p, "w", "0.5", 1);
+    ASSERT_ERROR(m, line, "invalid value");
+    line_for(line, sizeof line, p, "w", "x", 1);
+    ASSERT_ERROR(m, line, "invalid value");
+    /* nothing was cleared */
+    line_for(line, sizeof line, p, "r", NULL, 1);
+    assert_string_equal(ASSERT_QUERY(m, line), want);
+    /* 0 reaches the HAL as 0, once, and the register reads 0 */
+    line_for(line, sizeof line, p, "w", "0", 1);
+    daran_value_t v = ASSERT_SET(m, line, p->id);
+    assert_int_equal(v.u32, 0);
+    line_for(line, sizeof line, p, "r", NULL, 1);
+    assert_string_equal(ASSERT_QUERY(m, line), "0\n");
+}
+
+static void test_the_error_registers_are_exactly_the_zero_range_rows(void **state)
+{
+    (void)state;
+    static const daran_prop_t registers[] = {
+        DARAN_PROP_AXIS_ERROR, DARAN_PROP_MOTOR_ERROR, DARAN_PROP_ENCODER_ERROR,
+        DARAN_PROP_CONTROLLER_ERROR, DARAN_PROP_FET_THERMISTOR_ERROR,
+        DARAN_PROP_MOTOR_THERMISTOR_ERROR, DARAN_PROP_CAN_ERROR, DARAN_PROP_CONFIG_WARNINGS,
+    };
+    size_t zero_rows = 0;
+    for (size_t i = 0; i < N_ROWS; i++)
+        zero_rows += rows[i].range == DARAN_RANGE_ZERO;
+    assert_int_equal(zero_rows, sizeof registers / sizeof registers[0]);
+    for (size_t i = 0; i < sizeof registers / sizeof registers[0]; i++) {
+        const prop_row_t *p = &rows[registers[i]];
+        assert_int_equal(p->range, DARAN_RANGE_ZERO);
+        assert_int_equal(p->type, DARAN_TYPE_U32);
+        assert_int_equal(p->access, ACCESS_RW);
+    }
+}
+
+/* ---- rates that may be 0 (spec 10.1: "the corresponding properties") ---- */
+
+static void test_rate_properties_accept_0_and_refuse_negatives(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    static const char *const paths[] = {
+        "controller.config.input_filter_bandwidth", "output_shaft.vel_ramp_rate",
+        "output_shaft.torque_ramp_rate", "output_shaft.trap_traj_accel_limit",
+        "output_shaft.trap_traj_decel_limit", "trap_traj.config.accel_limit",
+        "trap_traj.config.decel_limit", "controller.config.vel_ramp_rate",
+        "controller.config.torque_ramp_rate",
+    };
+    for (size_t i = 0; i < sizeof paths / sizeof paths[0]; i++) {
+        char line[128];
+        snprintf(line, sizeof line, "w axis1.%s 0", paths[i]);
+        mock_send_line(m, line);
+        ASSERT_REPLY(m, "");
+        mock_check(m->n_calls == 1 && m->calls[0].kind == MOCK_CALL_SET &&
+                       m->calls[0].value.f32 == 0.0f,
+                   m, __FILE__, __LINE__, "0 must reach the HAL");
+        snprintf(line, sizeof line, "r axis1.%s", paths[i]);
+        assert_string_equal(ASSERT_QUERY(m, line), "0\n");
+        snprintf(line, sizeof line, "w axis1.%s -1e-45", paths[i]);
+        ASSERT_ERROR(m, line, "value out of range");
+        snprintf(line, sizeof line, "w axis1.%s -1", paths[i]);
+        ASSERT_ERROR(m, line, "value out of range");
+    }
+}
+
+static void test_the_mock_traj_mode_defaults_to_the_trapezoid(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.trap_traj.config.traj_mode"), "1\n");
+    (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.trap_traj.config.traj_mode"), "2\n");
+    m = mock_new();
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.trap_traj.config.traj_mode"), "1\n");
+}
+
 int main(void)
 {
     static mock_suite_t s;
 #define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
     ADD(test_the_property_list_has_every_spec_property);
+    ADD(test_every_path_is_unique_within_its_scope);
+    ADD(test_every_row_has_a_range_of_its_type);
     for (size_t i = 0; i < N_ROWS; i++) {
         const prop_row_t *p = &rows[i];
         void *st = (void *)(uintptr_t)p;
@@ -498,6 +978,11 @@ int main(void)
         } else {
             mock_suite_add(&s, read_only_case, st, "test_%s_refuses_a_write", p->path);
         }
+        if (p->range == DARAN_RANGE_ZERO)
+            mock_suite_add(&s, error_register_case, st, "test_%s_is_cleared_by_0_and_refuses_1",
+                           p->path);
+        mock_suite_add(&s, near_path_case, st, "test_paths_near_%s_are_invalid_properties",
+                       p->path);
     }
     ADD(test_bools_read_as_0_and_1);
     ADD(test_integers_read_in_decimal);
@@ -508,9 +993,20 @@ int main(void)
     ADD(test_random_floats_read_back_bit_exact_in_shortest_form);
     ADD(test_non_negative_accepts_negative_zero);
     ADD(test_unknown_paths_are_invalid_properties);
+    ADD(test_names_that_hash_onto_a_row_are_compared_in_full);
     ADD(test_a_path_for_another_drive_is_silent_whatever_it_names);
     ADD(test_temperature_and_circular_limits_are_not_cross_checked);
     ADD(test_setpoint_write_reaches_the_hal_once);
     ADD(test_node_id_write_changes_the_address);
+    ADD(test_s32_direction_minus_1_is_written_and_read_back_with_its_sign);
+    ADD(test_s32_direction_0_and_2_are_out_of_range_with_no_effect);
+    ADD(test_s32_integral_float_minus_1_point_0_is_accepted_as_minus_1);
+    ADD(test_s32_non_integers_and_doubled_signs_are_invalid_values);
+    ADD(test_s32_beyond_32_bits_is_out_of_range);
+    ADD(test_s32_reads_are_decimal_with_a_minus_when_negative);
+    ADD(test_a_u32_takes_no_sign);
+    ADD(test_the_error_registers_are_exactly_the_zero_range_rows);
+    ADD(test_rate_properties_accept_0_and_refuse_negatives);
+    ADD(test_the_mock_traj_mode_defaults_to_the_trapezoid);
     return mock_suite_run(&s, "properties");
 }

@@ -1,5 +1,7 @@
-/* Unit tests of drive states (estop, faults, idle; D16, D18, D21, D22) and
- * of the query commands f, g, i, e, h (D23-D25). */
+/* Unit tests of drive states (estop, faults, idle; D16, D18, D21, D22; any
+ * bit of axis0.error blocks motion, config_warnings never does, spec 10.4)
+ * and of the query commands f, g, i, e (the seven error registers), h
+ * (D23-D25). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,10 +45,12 @@ static void estop_case(void **state)
     ASSERT_ERROR(m, mo->line, "estop active");
 }
 
+/* Every bit of axis0.error but the e-stop's answers motor fault (spec 10.4):
+ * the ones this library names, bits no one names, and the old warning bit 5. */
 static const uint32_t blocking_flags[] = {
-    DARAN_FLAG_WATCHDOG, DARAN_FLAG_MOTOR_OVERTEMP, DARAN_FLAG_FET_OVERTEMP,
-    DARAN_FLAG_UNDERVOLTAGE, 1u << 6, 1u << 8, 1u << 31,
-    DARAN_FLAG_WATCHDOG | DARAN_FLAG_NVM_CORRUPT,
+    DARAN_FLAG_WATCHDOG, DARAN_FLAG_OVERTEMP, DARAN_FLAG_MOTOR_FAILED,
+    DARAN_FLAG_CONTROLLER_FAILED, DARAN_FLAG_UNDERVOLTAGE, 1u << 0, 1u << 5, 1u << 8,
+    1u << 31, DARAN_FLAG_WATCHDOG | DARAN_FLAG_OVERTEMP, ~(uint32_t)DARAN_FLAG_ESTOP,
 };
 
 static void fault_case(void **state)
@@ -72,8 +76,8 @@ static void idle_case(void **state)
     send_preset(m, mo);
     (void)ASSERT_SET(m, "w axis1.requested_state 1", DARAN_PROP_REQUESTED_STATE);
     ASSERT_ERROR(m, mo->line, "motor idle");
-    /* a warning flag changes nothing: still idle */
-    m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_NVM_CORRUPT;
+    /* a warning changes nothing: still idle */
+    m->props[DARAN_PROP_CONFIG_WARNINGS].u32 = DARAN_WARNING_NVM_CORRUPT;
     ASSERT_ERROR(m, mo->line, "motor idle");
 }
 
@@ -83,8 +87,30 @@ static void nvm_warning_case(void **state)
     SKIP_LINE_IF_NO_MULTI(mo->line);
     mock_t *m = mock_new();
     send_preset(m, mo);
-    m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_NVM_CORRUPT;
+    m->props[DARAN_PROP_CONFIG_WARNINGS].u32 = DARAN_WARNING_NVM_CORRUPT;
     ASSERT_MOVE(m, mo->line);
+    /* whatever warning bits are set */
+    send_preset(m, mo);
+    m->props[DARAN_PROP_CONFIG_WARNINGS].u32 = 0xFFFFFFFFu;
+    ASSERT_MOVE(m, mo->line);
+}
+
+/* The other registers say why; only axis0.error decides (the port sets the
+ * summary bits 6 and 9 when motor.error / controller.error are set). */
+static void other_registers_case(void **state)
+{
+    const motion_t *mo = *state;
+    SKIP_LINE_IF_NO_MULTI(mo->line);
+    mock_t *m = mock_new();
+    send_preset(m, mo);
+    m->props[DARAN_PROP_MOTOR_ERROR].u32 = DARAN_MOTOR_ERROR_STALL;
+    m->props[DARAN_PROP_CONTROLLER_ERROR].u32 = DARAN_CONTROLLER_ERROR_OVERSPEED;
+    m->props[DARAN_PROP_FET_THERMISTOR_ERROR].u32 = DARAN_THERMISTOR_ERROR_OVERTEMP;
+    m->props[DARAN_PROP_CAN_ERROR].u32 = 0xFFFFFFFFu;
+    ASSERT_MOVE(m, mo->line);
+    send_preset(m, mo);
+    m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_MOTOR_FAILED;
+    ASSERT_ERROR(m, mo->line, "motor fault");
 }
 
 static void test_estop_wins_over_every_other_flag(void **state)
@@ -109,7 +135,10 @@ static void test_commands_other_than_motion_work_in_estop(void **state)
     ASSERT_ACTION(m, "u 1", DARAN_ACTION_FEED_WATCHDOG);
     ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
     assert_string_equal(ASSERT_QUERY(m, "f 1"), "0 0\n");
-    assert_string_equal(ASSERT_QUERY(m, "e 1"), "1 estop\n");
+    mock_send_line(m, "e 1");
+    ASSERT_REPLY(m, "axis: 16384\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
+                    "motor_thermistor: 0\ncan: 0\n");
+    ASSERT_NO_EFFECT(m);
     assert_string_equal(ASSERT_QUERY(m, "r axis1.current_state"), "1\n");
     (void)ASSERT_QUERY(m, "g 1");
     (void)ASSERT_QUERY(m, "i 1");
@@ -138,10 +167,41 @@ static void test_closed_loop_request_is_refused_while_a_flag_is_set(void **state
     ASSERT_ERROR(m, "w axis0.requested_state 8", "estop active");
     /* idle may still be requested */
     (void)ASSERT_SET(m, "w axis1.requested_state 1", DARAN_PROP_REQUESTED_STATE);
-    set_state(m, DARAN_FLAG_FET_OVERTEMP, DARAN_STATE_IDLE);
+    set_state(m, DARAN_FLAG_OVERTEMP, DARAN_STATE_IDLE);
     ASSERT_ERROR(m, "w axis1.requested_state 8", "motor fault");
-    set_state(m, DARAN_FLAG_NVM_CORRUPT, DARAN_STATE_IDLE);
+    set_state(m, 1u << 5, DARAN_STATE_IDLE);
+    ASSERT_ERROR(m, "w axis1.requested_state 8", "motor fault");
+    /* a warning is not a flag */
+    set_state(m, 0, DARAN_STATE_IDLE);
+    m->props[DARAN_PROP_CONFIG_WARNINGS].u32 = DARAN_WARNING_NVM_CORRUPT;
     (void)ASSERT_SET(m, "w axis1.requested_state 8", DARAN_PROP_REQUESTED_STATE);
+}
+
+static void test_axis_error_cleared_by_a_write_of_0_leaves_the_drive_idle(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
+    ASSERT_ERROR(m, "w axis1.error 1", "value out of range");
+    ASSERT_ERROR(m, "t 1 10", "estop active");
+    daran_value_t v = ASSERT_SET(m, "w axis1.error 0", DARAN_PROP_AXIS_ERROR);
+    assert_int_equal(v.u32, 0);
+    /* D33: clearing does not close the loop */
+    ASSERT_ERROR(m, "t 1 10", "motor idle");
+    (void)ASSERT_SET(m, "w axis1.requested_state 8", DARAN_PROP_REQUESTED_STATE);
+    ASSERT_MOVE(m, "t 1 10");
+}
+
+static void test_sc_clears_the_warnings_in_the_mock_and_the_drive_keeps_running(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_CONFIG_WARNINGS].u32 = DARAN_WARNING_NVM_CORRUPT;
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.config_warnings"), "1\n");
+    ASSERT_MOVE(m, "t 1 10");
+    ASSERT_ACTION(m, "sc 1", DARAN_ACTION_CLEAR_ERRORS);
+    assert_string_equal(ASSERT_QUERY(m, "r axis1.config_warnings"), "0\n");
+    ASSERT_MOVE(m, "t 1 10");
 }
 
 static void test_closed_loop_request_checks_its_value_first(void **state)
@@ -171,7 +231,7 @@ static void test_refused_motion_does_not_feed_the_watchdog(void **state)
 {
     (void)state;
     mock_t *m = mock_new();
-    ASSERT_ERROR(m, "t 1 10 0 0", "value out of range");
+    ASSERT_ERROR(m, "t 1 10 0 -1", "value out of range");
     assert_int_equal(mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG), 0);
     set_state(m, 0, DARAN_STATE_IDLE);
     ASSERT_ERROR(m, "t 1 10", "motor idle");
@@ -244,10 +304,16 @@ static void test_a_start_refused_by_its_values_keeps_the_preset(void **state)
     ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
     const daran_move_t *mv = ASSERT_MOVE(m, "mt 1 0");
     assert_true(mv->pos_deg == 100.0f);
-    ASSERT_SILENT(m, "ms 1 10 0 0");
+    ASSERT_SILENT(m, "ms 1 10 0 -1");
     ASSERT_ERROR(m, "mt 1 0", "value out of range");
     mv = ASSERT_MOVE(m, "mp 1 0");
     assert_true(mv->pos_deg == 10.0f);
+    /* spec 10.1: duration 0 with a distance is infeasible, and keeps the preset too */
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
+    ASSERT_SILENT(m, "ms 1 20 0 10");
+    ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
+    mv = ASSERT_MOVE(m, "mt 1 0");
+    assert_true(mv->pos_deg == 20.0f);
 }
 
 static void test_start_without_preset_answers_by_id(void **state)
@@ -321,32 +387,139 @@ static void test_i_answers_three_decimal_integers(void **state)
     assert_string_equal(ASSERT_QUERY(m, mock_with_checksum(line, sizeof line, "i 1")), want);
 }
 
-typedef struct e_case { uint32_t flags; const char *text; } e_case_t;
+/* ---- e: the seven error registers (spec 10.4, D24) ---- */
+
+/* The registers `e` answers, in its order, with the names it writes. */
+static const daran_prop_t e_registers[7] = {
+    DARAN_PROP_AXIS_ERROR,       DARAN_PROP_MOTOR_ERROR,           DARAN_PROP_ENCODER_ERROR,
+    DARAN_PROP_CONTROLLER_ERROR, DARAN_PROP_FET_THERMISTOR_ERROR,  DARAN_PROP_MOTOR_THERMISTOR_ERROR,
+    DARAN_PROP_CAN_ERROR,
+};
+static const char *const e_names[7] = {"axis", "motor", "encoder", "controller",
+                                       "fet_thermistor", "motor_thermistor", "can"};
+
+typedef struct e_case {
+    const char *why;
+    uint32_t values[7]; /* in e_registers order */
+} e_case_t;
 
 static const e_case_t e_cases[] = {
-    {0, "0"},
-    {DARAN_FLAG_ESTOP, "1 estop"},
-    {DARAN_FLAG_ESTOP | DARAN_FLAG_WATCHDOG, "3 estop watchdog"},
-    {DARAN_FLAG_MOTOR_OVERTEMP, "4 motor_overtemp"},
-    {DARAN_FLAG_FET_OVERTEMP, "8 fet_overtemp"},
-    {DARAN_FLAG_UNDERVOLTAGE, "16 undervoltage"},
-    {DARAN_FLAG_NVM_CORRUPT, "32 nvm_corrupt"},
-    {0x3F, "63 estop watchdog motor_overtemp fet_overtemp undervoltage nvm_corrupt"},
-    {(1u << 8) | DARAN_FLAG_ESTOP, "257 estop"},
-    {1u << 31, "2147483648"},
-    {0xFFFFFFFFu, "4294967295 estop watchdog motor_overtemp fet_overtemp undervoltage nvm_corrupt"},
+    {"all_zero", {0, 0, 0, 0, 0, 0, 0}},
+    {"estop", {DARAN_FLAG_ESTOP, 0, 0, 0, 0, 0, 0}},
+    {"a_stall",
+     {DARAN_FLAG_MOTOR_FAILED, DARAN_MOTOR_ERROR_STALL, 0, 0, 0, 0, 0}},
+    {"an_overspeed",
+     {DARAN_FLAG_CONTROLLER_FAILED, 0, 0, DARAN_CONTROLLER_ERROR_OVERSPEED, 0, 0, 0}},
+    {"both_thermistors",
+     {DARAN_FLAG_OVERTEMP, 0, 0, 0, DARAN_THERMISTOR_ERROR_OVERTEMP,
+      DARAN_THERMISTOR_ERROR_OVERTEMP, 0}},
+    {"watchdog_and_undervoltage", {DARAN_FLAG_WATCHDOG | DARAN_FLAG_UNDERVOLTAGE, 0, 0, 0, 0, 0, 0}},
+    {"a_distinct_value_in_each", {1, 2, 3, 4, 5, 6, 7}},
+    {"every_bit_everywhere",
+     {0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu}},
+    {"only_can", {0, 0, 0, 0, 0, 0, 1u << 31}},
 };
+
+/* The whole `e` reply for @p values, one "name: value" line each. */
+static void e_reply(char *buf, size_t size, const uint32_t *values, bool checksum)
+{
+    size_t k = 0;
+    buf[0] = '\0';
+    for (size_t i = 0; i < 7; i++) {
+        char payload[48];
+        snprintf(payload, sizeof payload, "%s: %lu", e_names[i], (unsigned long)values[i]);
+        mock_reply_line(buf + k, size - k, payload, checksum);
+        k += strlen(buf + k);
+    }
+}
 
 static void e_case_run(void **state)
 {
     const e_case_t *c = *state;
     mock_t *m = mock_new();
-    m->props[DARAN_PROP_AXIS_ERROR].u32 = c->flags;
-    char want[128], line[32];
-    mock_reply_line(want, sizeof want, c->text, false);
-    assert_string_equal(ASSERT_QUERY(m, "e 1"), want);
-    mock_reply_line(want, sizeof want, c->text, true);
-    assert_string_equal(ASSERT_QUERY(m, mock_with_checksum(line, sizeof line, "e 1")), want);
+    for (size_t i = 0; i < 7; i++)
+        m->props[e_registers[i]].u32 = c->values[i];
+    /* a warning never shows in e */
+    m->props[DARAN_PROP_CONFIG_WARNINGS].u32 = DARAN_WARNING_NVM_CORRUPT;
+    char want[512], line[32];
+    e_reply(want, sizeof want, c->values, false);
+    static const char *const lines[] = {"e 1", "e 0", "e 1 ", "E 1"};
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        mock_send_line(m, lines[i]);
+        mock_check(m->n_writes == 7, m, __FILE__, __LINE__, "expected 7 lines, got %zu", m->n_writes);
+        ASSERT_REPLY(m, want);
+        ASSERT_NO_EFFECT(m);
+    }
+    /* each line carries its own checksum when the request had one */
+    e_reply(want, sizeof want, c->values, true);
+    mock_send_line(m, mock_with_checksum(line, sizeof line, "e 1"));
+    mock_check(m->n_writes == 7, m, __FILE__, __LINE__, "expected 7 lines, got %zu", m->n_writes);
+    ASSERT_REPLY(m, want);
+    ASSERT_NO_EFFECT(m);
+}
+
+static void test_e_lines_are_in_the_vendor_order_with_the_vendor_names(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    mock_send_line(m, "e 1");
+    ASSERT_REPLY(m, "axis: 0\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
+                    "motor_thermistor: 0\ncan: 0\n");
+    m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_ESTOP | DARAN_FLAG_OVERTEMP;
+    m->props[DARAN_PROP_MOTOR_THERMISTOR_ERROR].u32 = DARAN_THERMISTOR_ERROR_OVERTEMP;
+    m->props[DARAN_PROP_CAN_ERROR].u32 = 4294967295u;
+    mock_send_line(m, "e 1");
+    ASSERT_REPLY(m, "axis: 278528\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
+                    "motor_thermistor: 1\ncan: 4294967295\n");
+    /* "e 1 *N": each line's N is the XOR of its payload and the space, worked
+     * out by hand (Python: functools.reduce(operator.xor, map(ord, "axis: 278528 "))) */
+    char line[16];
+    mock_send_line(m, mock_with_checksum(line, sizeof line, "e 1"));
+    ASSERT_REPLY(m, "axis: 278528 *59\nmotor: 0 *97\nencoder: 0 *126\ncontroller: 0 *22\n"
+                    "fet_thermistor: 0 *55\nmotor_thermistor: 1 *42\ncan: 4294967295 *91\n");
+}
+
+/* A register that cannot be read makes the whole reply one error line:
+ * never half a report (D24). */
+static void test_e_with_a_failing_register_read_answers_only_motor_fault(void **state)
+{
+    (void)state;
+    for (size_t i = 0; i < 7; i++) {
+        mock_t *m = mock_new();
+        m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_ESTOP;
+        mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, (int)e_registers[i]);
+        mock_send_line(m, "e 1");
+        mock_check(m->n_writes == 1, m, __FILE__, __LINE__, "register %s: one line, got %zu",
+                   e_names[i], m->n_writes);
+        ASSERT_REPLY(m, "error: motor fault\n");
+        ASSERT_NO_EFFECT(m);
+        /* checksummed, the error line carries one */
+        char line[16], want[48];
+        mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, (int)e_registers[i]);
+        mock_send_line(m, mock_with_checksum(line, sizeof line, "e 1"));
+        ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "error: motor fault", true));
+        /* a HAL result that is not a protocol error is a motor fault too (D26) */
+        mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_BAD_ARGUMENT, (int)e_registers[i]);
+        mock_send_line(m, "e 1");
+        ASSERT_REPLY(m, "error: motor fault\n");
+        /* the next e answers in full */
+        mock_send_line(m, "e 1");
+        mock_check(m->n_writes == 7, m, __FILE__, __LINE__, "expected 7 lines");
+    }
+}
+
+/* A port that left a register out of its table answers invalid property
+ * for it: e writes that register as 0 (D24). */
+static void test_e_reads_a_register_the_port_left_out_as_0(void **state)
+{
+    (void)state;
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_ENCODER_ERROR].u32 = 9;
+    m->props[DARAN_PROP_CAN_ERROR].u32 = 3;
+    mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_INVALID_PROPERTY, DARAN_PROP_ENCODER_ERROR);
+    mock_send_line(m, "e 1");
+    ASSERT_REPLY(m, "axis: 0\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
+                    "motor_thermistor: 0\ncan: 3\n");
 }
 
 static const char *const help_words[] = {"t",  "q",  "p",  "v",  "c",  "d",  "ms", "mt", "mq",
@@ -443,12 +616,16 @@ int main(void)
                        motions[i].line);
         mock_suite_add(&s, nvm_warning_case, st, "test_\"%s\"_runs_with_only_nvm_corrupt_set",
                        motions[i].line);
+        mock_suite_add(&s, other_registers_case, st,
+                       "test_\"%s\"_is_decided_by_axis0.error_alone", motions[i].line);
     }
     ADD(test_estop_wins_over_every_other_flag);
     ADD(test_commands_other_than_motion_work_in_estop);
     ADD(test_after_estop_clear_keeps_the_drive_idle_until_closed_loop);
     ADD(test_closed_loop_request_is_refused_while_a_flag_is_set);
     ADD(test_closed_loop_request_checks_its_value_first);
+    ADD(test_axis_error_cleared_by_a_write_of_0_leaves_the_drive_idle);
+    ADD(test_sc_clears_the_warnings_in_the_mock_and_the_drive_keeps_running);
     ADD(test_accepted_motion_feeds_the_watchdog_after_its_move);
     ADD(test_refused_motion_does_not_feed_the_watchdog);
     ADD(test_u_feeds_the_watchdog_in_any_state);
@@ -463,8 +640,10 @@ int main(void)
     ADD(test_i_answers_three_decimal_integers);
     for (size_t i = 0; i < sizeof e_cases / sizeof e_cases[0]; i++)
         mock_suite_add(&s, e_case_run, (void *)(uintptr_t)&e_cases[i],
-                       "test_e_with_flags_0x%X_answers_\"%s\"", (unsigned)e_cases[i].flags,
-                       e_cases[i].text);
+                       "test_e_with_%s_answers_seven_register_lines", e_cases[i].why);
+    ADD(test_e_lines_are_in_the_vendor_order_with_the_vendor_names);
+    ADD(test_e_with_a_failing_register_read_answers_only_motor_fault);
+    ADD(test_e_reads_a_register_the_port_left_out_as_0);
     ADD(test_h_answers_one_line_per_command_in_table_order);
     ADD(test_h_lines_each_carry_a_checksum_when_requested);
     ADD(test_queries_for_another_drive_are_silent);
