@@ -761,6 +761,32 @@ static void test_s_curve_is_continuous_in_position_velocity_and_acceleration(voi
     assert_float_equal(pos(), 270.0f, 0.05f);
 }
 
+/* S-curve with accel 60 and decel 120 (r/min)/s, 270 deg at 30 r/min:
+ * V = 180 deg/s; rising 2V/A1 = 1 s over 90 deg, falling 2V/A2 = 0.5 s over
+ * 45 deg (jerk A2^2/V = 2880 deg/s^3), cruise 135 deg in 0.75 s: T = 2.25 s.
+ * At t = 2.0 (0.25 s before the end, mid-fall) the remaining distance is
+ * J*0.25^3/6 = V^2/(6 A2) = 7.5 deg: 262.5 deg, acceleration -A2 = -720. */
+static void test_s_curve_with_unequal_rates_ends_on_time_and_stays_continuous(void **state)
+{
+    float prev_acc = 0.0f;
+    long k;
+    (void)state;
+    set_u32(DARAN_PROP_TRAJ_MODE, 2u);
+    set_f32(DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT, 120.0f);
+    start(DARAN_MOVE_TRAPEZOID, 270.0f, 30.0f, 0.0f, 0.0f, DARAN_GIVEN_VEL);
+    for (k = 1; k <= 2300; k++) {
+        daran_sim_model_tick(&model);
+        assert_true(fabsf(model.acc_sp - prev_acc) <= 2880.0f * 0.001f + 1e-3f);
+        prev_acc = model.acc_sp;
+        if (k == 2000) {
+            assert_float_equal(model.pos_sp, 262.5f, 1e-3f);
+            assert_float_equal(model.acc_sp, -720.0f, 1e-2f);
+        }
+        assert_int_equal(model.trajectory_done, k >= 2250);
+    }
+    assert_true(model.pos_sp == 270.0f);
+}
+
 /* ---- turn 2: faults and error registers ---- */
 
 /* Stall limiter: 15 A (1.5 Nm) into a blocked shaft, limit 10 A for 0.5 s:
@@ -1064,6 +1090,7 @@ int main(void)
         cmocka_unit_test_setup(test_timed_moves_of_three_distances_end_on_the_planned_tick, setup),
         cmocka_unit_test_setup(test_short_s_curve_is_the_s_curve_triangle, setup),
         cmocka_unit_test_setup(test_s_curve_is_continuous_in_position_velocity_and_acceleration, setup),
+        cmocka_unit_test_setup(test_s_curve_with_unequal_rates_ends_on_time_and_stays_continuous, setup),
         cmocka_unit_test_setup(test_stall_limiter_trips_after_its_time_at_its_current, setup),
         cmocka_unit_test_setup(test_stall_fault_trips_the_limiter_at_the_next_tick, setup),
         cmocka_unit_test_setup(test_overspeed_trips_the_controller_only_when_enabled, setup),
