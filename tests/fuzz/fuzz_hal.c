@@ -95,6 +95,14 @@ void fuzz_hal_init(fuzz_hal_t *h, uint32_t id)
     h->props[DARAN_PROP_SERIAL_NUMBER].u64 = 18446744073709551615ull;
     h->props[DARAN_PROP_VBUS_VOLTAGE].f32 = 24.0f;
     h->props[DARAN_PROP_POS_SETPOINT].f32 = -12.5f;
+    h->props[DARAN_PROP_TRAJ_MODE].u32 = 1u;
+    h->props[DARAN_PROP_CONTROL_MODE].u32 = 3u;
+    h->props[DARAN_PROP_INPUT_MODE].u32 = 3u;
+    h->props[DARAN_PROP_MOTOR_DIRECTION].s32 = -1;
+    h->props[DARAN_PROP_POLE_PAIRS].s32 = 7;
+    h->props[DARAN_PROP_ENCODER_CPR].s32 = 16384;
+    h->props[DARAN_PROP_ENCODER_POS_ABS].s32 = INT32_MIN;
+    h->props[DARAN_PROP_ENCODER_TURN_ABS].s32 = -1;
     h->props[DARAN_PROP_POS_ESTIMATE].f32 = 1.0e-7f;
     h->props[DARAN_PROP_VEL_ESTIMATE].f32 = -3.0e12f;
 }
@@ -176,39 +184,104 @@ static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
     return DARAN_OK;
 }
 
+/* An integer of a set range: the values the range documents in
+ * daran_properties.h, written out here rather than taken from the core. */
+static bool integer_in_set(daran_range_t range, int64_t x)
+{
+    switch (range) {
+    case DARAN_RANGE_UART_BAUD:
+        return x == 9600 || x == 19200 || x == 38400 || x == 57600 || x == 115200;
+    case DARAN_RANGE_CAN_BAUD:
+        return x == 125000 || x == 250000 || x == 500000 || x == 1000000;
+    case DARAN_RANGE_AXIS_STATE:
+        return x == DARAN_STATE_IDLE || x == DARAN_STATE_CLOSED_LOOP;
+    case DARAN_RANGE_INPUT_MODE:
+        return x == 1 || x == 2 || x == 3 || x == 5 || x == 6 || x == 9;
+    case DARAN_RANGE_DIRECTION:
+        return x == -1 || x == 1;
+    case DARAN_RANGE_MOTOR_TYPE:
+        return x == 0 || x == 2 || x == 3;
+    default:
+        return false;
+    }
+}
+
+/* Every range of daran_range_t for an integer (u32, s32, bool) value x. A
+ * new range makes -Wswitch name this function until it is written here. */
+static bool integer_in_range(daran_range_t range, int64_t x)
+{
+    switch (range) {
+    case DARAN_RANGE_NONE:
+        return true;
+    case DARAN_RANGE_NON_NEGATIVE:
+        return x >= 0;
+    case DARAN_RANGE_POSITIVE:
+        return x > 0;
+    case DARAN_RANGE_NON_POSITIVE:
+        return x <= 0;
+    case DARAN_RANGE_BOOL:
+        return x == 0 || x == 1;
+    case DARAN_RANGE_ZERO:
+        return x == 0;
+    case DARAN_RANGE_NODE_ID:
+        return x >= 1 && x <= DARAN_MOTOR_ID_MAX;
+    case DARAN_RANGE_CAN_PROTOCOL:
+        return x == 0 || x == 1;
+    case DARAN_RANGE_CONTROL_MODE:
+        return x >= 1 && x <= 3;
+    case DARAN_RANGE_TRAJ_MODE:
+        return x == 1 || x == 2;
+    case DARAN_RANGE_POLE_PAIRS:
+        return x >= 1 && x <= 128;
+    case DARAN_RANGE_UART_BAUD:
+    case DARAN_RANGE_CAN_BAUD:
+    case DARAN_RANGE_AXIS_STATE:
+    case DARAN_RANGE_INPUT_MODE:
+    case DARAN_RANGE_DIRECTION:
+    case DARAN_RANGE_MOTOR_TYPE:
+        return integer_in_set(range, x);
+    case DARAN_RANGE_COUNT:
+        return false;
+    }
+    return false;
+}
+
+/* What the core promises of every value it writes (daran_properties.h,
+ * mirrored from src/commands_property.c's rules): finite floats within the
+ * float ranges (the integer-only ranges put no bound on a float); integers
+ * of the type within the range; u64 unbounded (serial numbers are
+ * read-only). */
 static bool value_in_range(daran_prop_t prop, daran_value_t v)
 {
     const prop_rule_t *r = &rules[prop];
-    if (r->type == DARAN_TYPE_F32) {
+    switch (r->type) {
+    case DARAN_TYPE_F32:
         if (!isfinite(v.f32)) {
             return false;
         }
         switch (r->range) {
         case DARAN_RANGE_NON_NEGATIVE: return v.f32 >= 0.0f;
         case DARAN_RANGE_POSITIVE: return v.f32 > 0.0f;
+        case DARAN_RANGE_NON_POSITIVE: return v.f32 <= 0.0f;
         default: return true;
         }
-    }
-    if (r->type == DARAN_TYPE_U64) {
+    case DARAN_TYPE_U64:
         return true;
+    case DARAN_TYPE_S32:
+        return integer_in_range(r->range, (int64_t)v.s32);
+    case DARAN_TYPE_BOOL:
+        return v.u32 <= 1u && integer_in_range(r->range, (int64_t)v.u32);
+    case DARAN_TYPE_U32:
+        return integer_in_range(r->range, (int64_t)v.u32);
     }
-    switch (r->range) {
-    case DARAN_RANGE_BOOL: return v.u32 <= 1u;
-    case DARAN_RANGE_NODE_ID: return v.u32 >= 1u && v.u32 <= DARAN_MOTOR_ID_MAX;
-    case DARAN_RANGE_UART_BAUD:
-        return v.u32 == 9600u || v.u32 == 19200u || v.u32 == 38400u || v.u32 == 57600u ||
-               v.u32 == 115200u;
-    case DARAN_RANGE_CAN_BAUD:
-        return v.u32 == 125000u || v.u32 == 250000u || v.u32 == 500000u || v.u32 == 1000000u;
-    case DARAN_RANGE_AXIS_STATE:
-        return v.u32 == DARAN_STATE_IDLE || v.u32 == DARAN_STATE_CLOSED_LOOP;
-    default: return r->type != DARAN_TYPE_BOOL || v.u32 <= 1u;
-    }
+    return false;
 }
 
+/* Any bit of axis0.error blocks motion (the NVM warning lives in
+ * axis0.config_warnings and blocks nothing). */
 static bool blocking_flags(const fuzz_hal_t *h)
 {
-    return (h->props[DARAN_PROP_AXIS_ERROR].u32 & ~(uint32_t)DARAN_FLAG_WARNING_MASK) != 0u;
+    return h->props[DARAN_PROP_AXIS_ERROR].u32 != 0u;
 }
 
 static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
@@ -255,6 +328,10 @@ static daran_result_t hal_move(void *ctx, const daran_move_t *move)
     FUZZ_CHECK(h->props[DARAN_PROP_CURRENT_STATE].u32 == DARAN_STATE_CLOSED_LOOP &&
                    !blocking_flags(h),
                "move while idle or with a blocking flag");
+    /* daran_hal.h's table: zero rates are meaningful (spec 10.1) except a
+     * filter bandwidth, which the core never passes as 0 (it clears
+     * DARAN_GIVEN_RATE: "keep the current one"); a rate of 0 is +0, as it
+     * becomes a property that reads back. */
     switch (move->kind) {
     case DARAN_MOVE_FILTERED_POSITION:
         FUZZ_CHECK((move->given & DARAN_GIVEN_RATE) == 0u || move->rate > 0.0f,
@@ -263,12 +340,16 @@ static daran_result_t hal_move(void *ctx, const daran_move_t *move)
     case DARAN_MOVE_TRAPEZOID:
         FUZZ_CHECK((move->given & DARAN_GIVEN_VEL) == 0u || move->vel_rpm > 0.0f,
                    "q with a cruise velocity <= 0");
-        FUZZ_CHECK((move->given & DARAN_GIVEN_RATE) == 0u || move->rate > 0.0f,
-                   "q with an acceleration <= 0");
+        FUZZ_CHECK((move->given & DARAN_GIVEN_RATE) == 0u ||
+                       (move->rate >= 0.0f && !signbit(move->rate)),
+                   "q with an acceleration < 0 or -0");
+        FUZZ_CHECK((move->given & DARAN_GIVEN_RATE) == 0u || move->rate > 0.0f ||
+                       ((move->given & DARAN_GIVEN_VEL) == 0u && move->vel_rpm == 0.0f),
+                   "q step (acceleration 0) with a cruise velocity");
         break;
     case DARAN_MOVE_VELOCITY_RAMP:
     case DARAN_MOVE_TORQUE_RAMP:
-        FUZZ_CHECK(move->rate > 0.0f, "ramp with a rate <= 0");
+        FUZZ_CHECK(move->rate >= 0.0f && !signbit(move->rate), "ramp with a rate < 0 or -0");
         break;
     case DARAN_MOVE_IMPEDANCE:
         FUZZ_CHECK(move->kp >= 0.0f && move->kd >= 0.0f, "d with a negative gain");
@@ -309,9 +390,18 @@ static daran_result_t hal_action(void *ctx, daran_action_t action)
         h->props[DARAN_PROP_AXIS_ERROR].u32 |= DARAN_FLAG_ESTOP;
         h->props[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_IDLE;
         break;
-    case DARAN_ACTION_CLEAR_ERRORS:
-        h->props[DARAN_PROP_AXIS_ERROR].u32 = 0u;
+    case DARAN_ACTION_CLEAR_ERRORS: {
+        /* `sc` clears every error register and the warnings (spec 10.4) */
+        static const daran_prop_t registers[] = {
+            DARAN_PROP_AXIS_ERROR,           DARAN_PROP_MOTOR_ERROR,
+            DARAN_PROP_ENCODER_ERROR,        DARAN_PROP_CONTROLLER_ERROR,
+            DARAN_PROP_FET_THERMISTOR_ERROR, DARAN_PROP_MOTOR_THERMISTOR_ERROR,
+            DARAN_PROP_CAN_ERROR,            DARAN_PROP_CONFIG_WARNINGS};
+        for (size_t i = 0; i < sizeof registers / sizeof registers[0]; i++) {
+            h->props[registers[i]].u32 = 0u;
+        }
         break;
+    }
     case DARAN_ACTION_SET_ZERO:
         h->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
         break;
@@ -366,7 +456,37 @@ void fuzz_check_reply_line(const char *line, size_t len)
     }
     FUZZ_CHECK(payload >= 1u && line[0] != ' ' && line[payload - 1u] != ' ',
                "reply payload empty or padded: \"%s\"", fuzz_escape(line, len));
-    if (payload >= 7u && memcmp(line, "error: ", 7) == 0) {
+    /* `e`: "name: value", a register name the vendor's decoder knows and a
+     * decimal u32 (spec 10.4) - the only replies with a ':' but errors. */
+    static const char *const registers[] = {"axis", "motor", "encoder", "controller",
+                                            "fet_thermistor", "motor_thermistor", "can"};
+    const char *colon = memchr(line, ':', payload);
+    bool is_error = payload >= 7u && memcmp(line, "error: ", 7) == 0;
+    if (colon != NULL && !is_error) {
+        size_t name_len = (size_t)(colon - line);
+        bool known = false;
+        for (size_t i = 0; i < sizeof registers / sizeof registers[0]; i++) {
+            known = known || (strlen(registers[i]) == name_len &&
+                              memcmp(registers[i], line, name_len) == 0);
+        }
+        FUZZ_CHECK(known && payload >= name_len + 3u && colon[1] == ' ',
+                   "reply looks like a malformed error or register: \"%s\"",
+                   fuzz_escape(line, len));
+        const char *number = colon + 2;
+        size_t count = payload - name_len - 2u;
+        FUZZ_CHECK(count == 1u || number[0] != '0', "register value with a leading zero: \"%s\"",
+                   fuzz_escape(line, len));
+        uint64_t value = 0;
+        for (size_t i = 0; i < count; i++) {
+            FUZZ_CHECK(number[i] >= '0' && number[i] <= '9' && i < 10u,
+                       "register value malformed: \"%s\"", fuzz_escape(line, len));
+            value = value * 10u + (uint64_t)(number[i] - '0');
+        }
+        FUZZ_CHECK(value <= UINT32_MAX, "register value beyond u32: \"%s\"",
+                   fuzz_escape(line, len));
+        return;
+    }
+    if (is_error) {
         bool known = false;
         for (size_t i = 0; i < sizeof phrases / sizeof phrases[0]; i++) {
             if (strlen(phrases[i]) == payload - 7u &&
@@ -375,9 +495,6 @@ void fuzz_check_reply_line(const char *line, size_t len)
             }
         }
         FUZZ_CHECK(known, "unknown error phrase: \"%s\"", fuzz_escape(line, len));
-    } else {
-        FUZZ_CHECK(memchr(line, ':', payload) == NULL, "reply looks like a malformed error: \"%s\"",
-                   fuzz_escape(line, len));
     }
 }
 

@@ -93,8 +93,9 @@ void fuzz_forward(void *ctx, uint8_t id, const char *line, size_t len);
 void fuzz_bind(daran_drive_t *drive, fuzz_hal_t *h, bool forward);
 
 /* Invariant 4 for one reply line: 1..DARAN_REPLY_MAX bytes, printable ASCII,
- * exactly one line end at its end, a " *N" tail with the right N, an error
- * phrase from the protocol's list. */
+ * exactly one line end at its end (CR LF with DARAN_REPLY_CRLF), a " *N"
+ * tail with the right N, an error phrase from the protocol's list; the only
+ * other replies with a ':' are `e`'s "register: u32" lines. */
 void fuzz_check_reply_line(const char *line, size_t len);
 
 void fuzz_fail(const char *fmt, ...) FUZZ_NORETURN FUZZ_PRINTF(1, 2);

@@ -1,7 +1,8 @@
 /* Harness 2: daran_process_line() with the recording HAL.
  *
- * Input: 4 setup bytes (own id, drive state, forward hook, fault injection,
- * every error flag, odd values behind the read-only getters),
+ * Input: 4 setup bytes (own id, drive state or the NVM warning, forward
+ * hook, fault injection, every bit of every error register, odd values
+ * behind the read-only getters with S-curve timing),
  * then lines separated by '\n' (any bytes, '\r' and NUL included), each given
  * to daran_process_line() on one instance. After every line it asserts:
  *  - invariant 4: every reply line is well-formed (fuzz_check_reply_line);
@@ -242,14 +243,26 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         st.hal.props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_ESTOP;
         break;
     case 3:
-        st.hal.props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_NVM_CORRUPT | (data[1] & 0x40u);
+        /* the NVM warning (never blocks motion), with or without a blocking
+         * bit (0x40 is DARAN_FLAG_MOTOR_FAILED) and the register behind it */
+        st.hal.props[DARAN_PROP_CONFIG_WARNINGS].u32 = DARAN_WARNING_NVM_CORRUPT;
+        st.hal.props[DARAN_PROP_AXIS_ERROR].u32 = data[1] & (uint32_t)DARAN_FLAG_MOTOR_FAILED;
+        st.hal.props[DARAN_PROP_MOTOR_ERROR].u32 = (data[1] & 0x40u) != 0u ? DARAN_MOTOR_ERROR_STALL : 0u;
         break;
     default:
         break;
     }
     if ((data[2] & 0x40u) != 0u) {
-        /* every flag bit set: the longest `e` reply */
-        st.hal.props[DARAN_PROP_AXIS_ERROR].u32 |= 0xffffffc0u | (uint32_t)DARAN_FLAG_WARNING_MASK;
+        /* every bit of every error register: the longest `e` reply, seven
+         * lines of up to "motor_thermistor: 4294967295" */
+        static const daran_prop_t registers[] = {
+            DARAN_PROP_AXIS_ERROR,           DARAN_PROP_MOTOR_ERROR,
+            DARAN_PROP_ENCODER_ERROR,        DARAN_PROP_CONTROLLER_ERROR,
+            DARAN_PROP_FET_THERMISTOR_ERROR, DARAN_PROP_MOTOR_THERMISTOR_ERROR,
+            DARAN_PROP_CAN_ERROR,            DARAN_PROP_CONFIG_WARNINGS};
+        for (size_t i = 0; i < sizeof registers / sizeof registers[0]; i++) {
+            st.hal.props[registers[i]].u32 = 0xffffffffu;
+        }
     }
     if ((data[2] & 0x20u) != 0u) {
         /* odd values behind the getters: replies must still fit and be ASCII */
@@ -265,6 +278,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         st.hal.props[DARAN_PROP_FW_VERSION].u32 = 0xffffffffu;
         st.hal.props[DARAN_PROP_HW_VERSION].u32 = 0xffffffffu;
+        st.hal.props[DARAN_PROP_SERIAL_NUMBER_L].u32 = 0xffffffffu;
+        /* the widest s32 replies */
+        st.hal.props[DARAN_PROP_ENCODER_POS_ABS].s32 = INT32_MIN;
+        st.hal.props[DARAN_PROP_ENCODER_TURN_ABS].s32 = INT32_MIN + 1;
+        st.hal.props[DARAN_PROP_STORED_TURNS_COUNTS].s32 = INT32_MAX;
+        /* S-curve timing for mq */
+        st.hal.props[DARAN_PROP_TRAJ_MODE].u32 = 2u;
     }
     fuzz_bind(&st.drive, &st.hal, (data[1] & 4u) != 0u);
     if ((data[2] & 0x80u) != 0u) {

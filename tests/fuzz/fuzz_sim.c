@@ -5,7 +5,7 @@
  * Input: byte 0 picks the drive count (1..3) and the tick rate; then lines. A line starting
  * with '!' is a directive as daran-sim reads it (`!advance S`, at most 2 s
  * each and 2500 ticks per input; `!power-cycle [ID]`; `!fault ID overtemp|
- * undervoltage|nvm-corrupt`); any other line goes down the line to every
+ * undervoltage|stall|overspeed|nvm-corrupt`); any other line goes down the line to every
  * drive. Invariants checked:
  *  - 4: every reply line is well-formed;
  *  - the model stays finite: position, velocity, torques, setpoints,
@@ -176,6 +176,10 @@ static void directive(char *text, uint32_t *budget)
                 daran_sim_model_fault(&d->model, DARAN_SIM_FAULT_OVERTEMP);
             } else if (strcmp(argv[2], "undervoltage") == 0) {
                 daran_sim_model_fault(&d->model, DARAN_SIM_FAULT_UNDERVOLTAGE);
+            } else if (strcmp(argv[2], "stall") == 0) {
+                daran_sim_model_fault(&d->model, DARAN_SIM_FAULT_STALL);
+            } else if (strcmp(argv[2], "overspeed") == 0) {
+                daran_sim_model_fault(&d->model, DARAN_SIM_FAULT_OVERSPEED);
             } else if (strcmp(argv[2], "nvm-corrupt") == 0) {
                 (void)daran_sim_drive_corrupt_nvm(d);
             }

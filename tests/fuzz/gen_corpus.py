@@ -6,8 +6,10 @@ stripped), the simulator transcripts, and generated sessions: a pick-and-place
 arm streaming `t` at 500 Hz, a synchronised multi-drive move, an r/w tuning
 session. Each harness has its own input layout (see the harness's first
 comment); this script adds the setup bytes. Run from anywhere:
-    python3 tests/fuzz/gen_corpus.py [--shared /work/shared]
+    python3 tests/fuzz/gen_corpus.py [--shared /work/shared] [--only NAME...]
 then minimise with libFuzzer -merge=1 (tools/ci.d/40-fuzz.sh documents how).
+--only writes the seeds of the named sessions alone (e.g. a new recording:
+--only vendor-python-defaults), leaving the merged corpus as it is.
 """
 import argparse
 import hashlib
@@ -118,6 +120,26 @@ def hard_decimals():
     return out
 
 
+def error_registers():
+    """Every fault the simulator injects, read back through `e` (seven
+    register lines), cleared with `sc`; zero rates and S-curve timing."""
+    lines = ["w axis1.config.extra_setting.enable_stall_limit 1", "t 1 90 0 0", "!advance 0.5",
+             "!fault 1 stall", "!advance 0.2", "e 1", "t 1 0", "sc 1", "e 1",
+             "w axis1.requested_state 8",
+             "w axis1.controller.config.enable_overspeed_error 1", "v 1 30 0 2", "v 1 30 50 2",
+             "!advance 0.3", "!fault 1 overspeed", "!advance 0.2", "e 1", "sc 1",
+             "w axis1.requested_state 8", "!fault 1 overtemp", "!advance 0.5", "e 1",
+             "r axis1.fet_thermistor.error", "w axis1.fet_thermistor.error 0", "sc 1",
+             "!fault 1 undervoltage", "!advance 0.2", "e 1", "!advance 2", "sc 1",
+             "w axis1.requested_state 8", "t 1 0", "!advance 1",
+             "w axis1.trap_traj.config.traj_mode 2",
+             "ms 1 90 3 20", "mq 0 0", "!advance 1.5", "r axis1.controller.trajectory_done",
+             "!advance 1.6", "r axis1.controller.trajectory_done", "q 1 0 30 0", "!advance 0.5",
+             "c 1 0.2 0 6", "!advance 0.2", "!fault 1 nvm-corrupt", "!power-cycle 1",
+             "r axis1.config_warnings", "e 1", "sc 1", "r axis1.config_warnings", "f 1"]
+    return lines
+
+
 def with_checksums(lines):
     out = []
     for l in lines:
@@ -146,6 +168,9 @@ def protocol_only(lines):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--shared", default="/work/shared")
+    ap.add_argument("--only", nargs="+", metavar="NAME",
+                    help="write only these sessions' seeds (names as in recordings/, "
+                         "without .txt; no number seeds)")
     args = ap.parse_args()
 
     sessions = {"spec": spec_examples(args.shared)}
@@ -155,9 +180,17 @@ def main():
     sessions["sync-move"] = synchronised_move()
     sessions["tuning"] = tuning_session()
     sessions["tuning-checksum"] = with_checksums(tuning_session())
+    sessions["error-registers"] = error_registers()
     # relative starts from a setpoint near FLT_MAX must be refused, not overflow
     sessions["relative-overflow"] = ["w axis1.output_shaft.pos_setpoint 3e38", "ms 1 3e38 0 25",
                                      "mt 1 1", "mp 1 1", "ms 1 -3e38 1 1", "mq 1 1", "f 1"]
+
+    if args.only:
+        unknown = sorted(set(args.only) - set(sessions))
+        if unknown:
+            ap.error("no session named %s (there are: %s)" % (", ".join(unknown),
+                                                             ", ".join(sorted(sessions))))
+        sessions = {k: v for k, v in sessions.items() if k in args.only}
 
     for name, lines in sessions.items():
         proto = protocol_only(lines)
@@ -174,6 +207,9 @@ def main():
         # sim: the session on 3 drives, directives kept
         simbody = "\n".join(l for l in lines if not l.startswith("!#")).encode("latin-1")
         write("sim", bytes([2]) + simbody[:16000] + b"\n!advance 1\nf 0\n")
+
+    if args.only:
+        return
 
     numbers = ["0", "-0", "1", "100.5", "0.02", "160", "-3", "0.00001", "1.5e-07", "3.0e+12",
                "1.0e+09", "1.4142135623730951", "90.000000", "-45.500000", "1e39", "3.4028235e38",

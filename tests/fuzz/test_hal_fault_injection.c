@@ -44,6 +44,19 @@ static const char *const session[] = {
     "sc 1",
     "w axis1.requested_state 8",
     "t 1 12.5",
+    /* zero rates, s32, error registers, S-curve timing (spec section 10) */
+    "t 1 30 0 0",
+    "q 1 20 30 0",
+    "v 1 10 0 2",
+    "c 1 1 0 6",
+    "w axis1.motor.config.direction -1",
+    "r axis1.encoder.pos_abs",
+    "w axis1.error 0",
+    "w axis1.trap_traj.config.traj_mode 2",
+    "ms 1 120 5 10",
+    "mq 0 0",
+    "ms 1 0 0 0", /* the setpoint since `sz`: distance 0, duration 0 */
+    "mq 1 0",
     "sr 1",
 };
 #define SESSION_LEN (sizeof session / sizeof session[0])
