@@ -3,6 +3,7 @@
 #include "mock_hal.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static mock_t mock_instances[MOCK_INSTANCES];
@@ -62,7 +63,7 @@ mock_t *mock_new_slot(int slot, uint32_t id)
     m->fail_prop = -1;
     mock_defaults(m, id);
     daran_result_t r = daran_init(&m->drive, &mock_hal_fns, m, mock_write, m);
-    assert_int_equal(r, DARAN_OK);
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, r);
     return m;
 }
 
@@ -105,7 +106,7 @@ static bool mock_should_fail(mock_t *m, unsigned kind, int prop)
 
 static mock_call_t *mock_log(mock_t *m, mock_call_kind_t kind)
 {
-    assert_true(m->n_calls < MOCK_CALLS_MAX);
+    TEST_ASSERT_TRUE(m->n_calls < MOCK_CALLS_MAX);
     mock_call_t *c = &m->calls[m->n_calls++];
     memset(c, 0, sizeof *c);
     c->kind = kind;
@@ -117,8 +118,8 @@ static mock_call_t *mock_log(mock_t *m, mock_call_kind_t kind)
 static daran_result_t mock_get(void *ctx, daran_prop_t prop, daran_value_t *out)
 {
     mock_t *m = ctx;
-    assert_true((int)prop >= 0 && prop < DARAN_PROP_COUNT);
-    assert_non_null(out);
+    TEST_ASSERT_TRUE((int)prop >= 0 && prop < DARAN_PROP_COUNT);
+    TEST_ASSERT_NOT_NULL(out);
     m->n_gets++;
     if (mock_should_fail(m, MOCK_FAIL_GET, (int)prop))
         return m->fail_result;
@@ -129,7 +130,7 @@ static daran_result_t mock_get(void *ctx, daran_prop_t prop, daran_value_t *out)
 static daran_result_t mock_set(void *ctx, daran_prop_t prop, daran_value_t value)
 {
     mock_t *m = ctx;
-    assert_true((int)prop >= 0 && prop < DARAN_PROP_COUNT);
+    TEST_ASSERT_TRUE((int)prop >= 0 && prop < DARAN_PROP_COUNT);
     mock_call_t *c = mock_log(m, MOCK_CALL_SET);
     c->prop = prop;
     c->value = value;
@@ -154,7 +155,7 @@ static daran_result_t mock_set(void *ctx, daran_prop_t prop, daran_value_t value
 static daran_result_t mock_move(void *ctx, const daran_move_t *mv)
 {
     mock_t *m = ctx;
-    assert_non_null(mv);
+    TEST_ASSERT_NOT_NULL(mv);
     mock_call_t *c = mock_log(m, MOCK_CALL_MOVE);
     c->move = *mv;
     if (mock_should_fail(m, MOCK_FAIL_MOVE, -1)) {
@@ -207,7 +208,7 @@ static daran_result_t mock_move(void *ctx, const daran_move_t *mv)
         p[DARAN_PROP_INPUT_VEL].f32 = mv->vel_rpm;
         p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm;
         break;
-    default: fail_msg("move kind %d outside the enum", (int)mv->kind);
+    default: TEST_FAIL_MESSAGE_F("move kind %d outside the enum", (int)mv->kind);
     }
     return DARAN_OK;
 }
@@ -256,7 +257,7 @@ static daran_result_t mock_action(void *ctx, daran_action_t action)
     case DARAN_ACTION_SAVE_CONFIG:
     case DARAN_ACTION_ERASE_CONFIG:
     case DARAN_ACTION_FEED_WATCHDOG: break;
-    default: fail_msg("action %d outside the enum", (int)action);
+    default: TEST_FAIL_MESSAGE_F("action %d outside the enum", (int)action);
     }
     return DARAN_OK;
 }
@@ -266,17 +267,17 @@ const daran_hal_t mock_hal_fns = {mock_get, mock_set, mock_move, mock_action};
 void mock_write(void *ctx, const char *line, size_t len)
 {
     mock_t *m = ctx;
-    assert_non_null(line);
+    TEST_ASSERT_NOT_NULL(line);
     /* Whole lines only, each ending in the configured line end, bounded. */
-    assert_true(len >= 1 && len <= DARAN_REPLY_MAX);
-    assert_int_equal(line[len - 1], '\n');
-    assert_null(memchr(line, '\n', len - 1));
+    TEST_ASSERT_TRUE(len >= 1 && len <= DARAN_REPLY_MAX);
+    TEST_ASSERT_EQUAL_INT64('\n', line[len - 1]);
+    TEST_ASSERT_NULL(memchr(line, '\n', len - 1));
 #if DARAN_REPLY_CRLF
     /* checked here once, then stored as "\n" so every expectation reads the same */
-    assert_true(len >= 2 && line[len - 2] == '\r');
-    assert_null(memchr(line, '\r', len - 2));
+    TEST_ASSERT_TRUE(len >= 2 && line[len - 2] == '\r');
+    TEST_ASSERT_NULL(memchr(line, '\r', len - 2));
     len--;
-    assert_true(m->out_len + len <= MOCK_OUT_MAX);
+    TEST_ASSERT_TRUE(m->out_len + len <= MOCK_OUT_MAX);
     memcpy(m->out + m->out_len, line, len - 1);
     m->out[m->out_len + len - 1] = '\n';
     m->out_len += len;
@@ -284,7 +285,7 @@ void mock_write(void *ctx, const char *line, size_t len)
     m->n_writes++;
     return;
 #endif
-    assert_true(m->out_len + len <= MOCK_OUT_MAX);
+    TEST_ASSERT_TRUE(m->out_len + len <= MOCK_OUT_MAX);
     memcpy(m->out + m->out_len, line, len);
     m->out_len += len;
     m->out[m->out_len] = '\0';
@@ -294,8 +295,8 @@ void mock_write(void *ctx, const char *line, size_t len)
 void mock_forward(void *ctx, uint8_t id, const char *line, size_t len)
 {
     mock_t *m = ctx;
-    assert_true(m->n_fwd < MOCK_FWD_MAX);
-    assert_true(len < sizeof m->fwd[0].line);
+    TEST_ASSERT_TRUE(m->n_fwd < MOCK_FWD_MAX);
+    TEST_ASSERT_TRUE(len < sizeof m->fwd[0].line);
     mock_forward_t *f = &m->fwd[m->n_fwd++];
     f->id = id;
     f->len = len;
@@ -322,7 +323,7 @@ void mock_send_bytes(mock_t *m, const void *data, size_t len, size_t chunk)
     while (len > 0) {
         size_t n = len < chunk ? len : chunk;
         size_t queued = daran_rx_write(&m->drive, b, n);
-        assert_int_equal(queued, n);
+        TEST_ASSERT_EQUAL_INT64(n, queued);
         (void)daran_poll(&m->drive);
         b += n;
         len -= n;
@@ -335,7 +336,7 @@ void mock_send_line(mock_t *m, const char *line)
 {
     char buf[DARAN_LINE_MAX * 4 + 8];
     size_t n = strlen(line);
-    assert_true(n + 1 < sizeof buf);
+    TEST_ASSERT_TRUE(n + 1 < sizeof buf);
     memcpy(buf, line, n);
     buf[n] = '\n';
     mock_clear(m);
@@ -372,7 +373,7 @@ unsigned mock_xor(const char *s)
 char *mock_with_checksum(char *buf, size_t size, const char *payload)
 {
     size_t n = strlen(payload);
-    assert_true(n + 6 <= size);
+    TEST_ASSERT_TRUE(n + 6 <= size);
     memcpy(buf, payload, n);
     buf[n] = ' ';
     buf[n + 1] = '\0';
@@ -431,9 +432,11 @@ void mock_check(bool ok, const mock_t *m, const char *file, int line, const char
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    print_error("%s\n  line sent: \"%s\"\n  replies:   \"%s\"\n", msg,
-                mock_escape(m->last, strlen(m->last)), mock_escape(m->out, m->out_len));
-    _fail(file, line);
+    static char report[sizeof msg + 2 * 2048 + 64];
+    (void)file; /* Unity names the test file itself */
+    snprintf(report, sizeof report, "%s\n  line sent: \"%s\"\n  replies:   \"%s\"", msg,
+             mock_escape(m->last, strlen(m->last)), mock_escape(m->out, m->out_len));
+    UNITY_TEST_FAIL((UNITY_LINE_TYPE)line, report);
 }
 
 void mock_assert_reply(mock_t *m, const char *expected, const char *file, int line)
@@ -562,9 +565,35 @@ bool mock_uses_multi(const char *line)
 
 /* ---- table-generated suites ---- */
 
-void mock_suite_add(mock_suite_t *s, CMUnitTestFunction fn, void *state, const char *fmt, ...)
+/* Outside any test case: a full table stops the program with a message. */
+static mock_suite_case_t *mock_suite_next(mock_suite_t *s)
 {
-    assert_true(s->count < sizeof s->tests / sizeof s->tests[0]);
+    if (s->count == sizeof s->cases / sizeof s->cases[0]) {
+        UnityPrint("mock_suite: more cases than the table holds");
+        UNITY_PRINT_EOL();
+        UNITY_OUTPUT_FLUSH();
+        exit(1);
+    }
+    mock_suite_case_t *t = &s->cases[s->count];
+    t->fn = NULL;
+    t->test = NULL;
+    t->row = NULL;
+    return t;
+}
+
+void mock_suite_add_test_at(mock_suite_t *s, mock_test_fn fn, int line, const char *name)
+{
+    mock_suite_case_t *t = mock_suite_next(s);
+    snprintf(s->names[s->count], sizeof s->names[0], "%s", name);
+    t->test = fn;
+    t->line = line;
+    s->count++;
+}
+
+void mock_suite_add_at(mock_suite_t *s, mock_row_fn fn, const void *row, int line,
+                       const char *fmt, ...)
+{
+    (void)mock_suite_next(s);
     char *name = s->names[s->count];
     va_list ap;
     va_start(ap, fmt);
@@ -574,14 +603,45 @@ void mock_suite_add(mock_suite_t *s, CMUnitTestFunction fn, void *state, const c
     for (char *c = name; *c; c++)
         if (*c == ' ')
             *c = '_';
-    struct CMUnitTest *t = &s->tests[s->count++];
-    memset(t, 0, sizeof *t);
-    t->name = name;
-    t->test_func = fn;
-    t->initial_state = state;
+    mock_suite_case_t *t = &s->cases[s->count++];
+    t->fn = fn;
+    t->row = row;
+    t->line = line;
 }
 
-int mock_suite_run(mock_suite_t *s, const char *group)
+static const mock_suite_case_t *mock_running;
+
+static void mock_suite_trampoline(void)
 {
-    return _cmocka_run_group_tests(group, s->tests, s->count, NULL, NULL);
+    mock_running->fn(mock_running->row);
+}
+
+void mock_suite_run(mock_suite_t *s)
+{
+    for (size_t i = 0; i < s->count; i++) {
+        mock_running = &s->cases[i];
+        UnityDefaultTestRun(s->cases[i].test != NULL ? s->cases[i].test : mock_suite_trampoline,
+                            s->names[i], s->cases[i].line);
+    }
+}
+
+void mock_message(const char *fmt, ...)
+{
+    char text[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    UnityPrint(text);
+    UNITY_PRINT_EOL();
+}
+
+void mock_fail_at(int line, const char *fmt, ...)
+{
+    static char text[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    UNITY_TEST_FAIL((UNITY_LINE_TYPE)line, text);
 }

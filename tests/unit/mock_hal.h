@@ -11,13 +11,12 @@
 #ifndef MOCK_HAL_H
 #define MOCK_HAL_H
 
-#include <setjmp.h>
 #include <stdarg.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
-#include <cmocka.h>
+#include "unity.h"
 
 #include "daran_ascii.h"
 
@@ -169,22 +168,43 @@ bool mock_uses_multi(const char *line);
 #define SKIP_IF_NO_MULTI()                \
     do {                                  \
         if (!DARAN_ENABLE_MULTI_MOTOR)    \
-            skip();                       \
+            TEST_IGNORE();                \
     } while (0)
 #define SKIP_LINE_IF_NO_MULTI(line)                                \
     do {                                                           \
         if (!DARAN_ENABLE_MULTI_MOTOR && mock_uses_multi(line))    \
-            skip();                                                \
+            TEST_IGNORE();                                         \
     } while (0)
 
-/* Tests generated from tables: a CMUnitTest list with names built at run
- * time, so every row is its own case. */
+/* Tests generated from tables: each row is its own Unity case, with a
+ * name built at run time; the case gets its row back as its argument. */
+typedef void (*mock_row_fn)(const void *row);
+typedef void (*mock_test_fn)(void);
+typedef struct mock_suite_case {
+    mock_row_fn fn;     /* a table row's case, or */
+    mock_test_fn test;  /* a plain test function */
+    const void *row;
+    int line;
+} mock_suite_case_t;
 typedef struct mock_suite {
-    struct CMUnitTest tests[1200];
+    mock_suite_case_t cases[1200];
     char names[1200][112];
     size_t count;
 } mock_suite_t;
-void mock_suite_add(mock_suite_t *s, CMUnitTestFunction fn, void *state, const char *fmt, ...);
-int mock_suite_run(mock_suite_t *s, const char *group);
+/* Add a case; @p line is where the table lives (reports point there). */
+void mock_suite_add_at(mock_suite_t *s, mock_row_fn fn, const void *row, int line,
+                       const char *fmt, ...);
+#define mock_suite_add(s, fn, row, ...) mock_suite_add_at((s), (fn), (row), __LINE__, __VA_ARGS__)
+/* Add a plain test function under its own name. */
+void mock_suite_add_test_at(mock_suite_t *s, mock_test_fn fn, int line, const char *name);
+#define mock_suite_add_test(s, fn) mock_suite_add_test_at((s), (fn), __LINE__, #fn)
+/* Run every case added, inside the current UNITY_BEGIN()/UNITY_END(). */
+void mock_suite_run(mock_suite_t *s);
+
+/* A printf-style note in the test output (Unity 2.4.3 has no TEST_MESSAGE). */
+void mock_message(const char *fmt, ...);
+/* Fail the current test with a printf-style message, at the caller's line. */
+void mock_fail_at(int line, const char *fmt, ...);
+#define TEST_FAIL_MESSAGE_F(...) mock_fail_at(__LINE__, __VA_ARGS__)
 
 #endif /* MOCK_HAL_H */

@@ -6,6 +6,14 @@
 
 #include "mock_hal.h"
 
+void setUp(void)
+{
+}
+
+void tearDown(void)
+{
+}
+
 /* One line per command word, written for a given id. */
 static const char *const per_word[] = {
     "t %d 10 0 25", "q %d 160 30 10", "p %d 10 5 3", "v %d 20 3 1", "c %d 5 0 1",
@@ -25,9 +33,9 @@ static bool is_read(const char *fmt)
     return strchr("rfghie", fmt[0]) != NULL && fmt[1] == ' ';
 }
 
-static void other_id_case(void **state)
+static void other_id_case(const void *row_arg)
 {
-    const char *fmt = *state;
+    const char *fmt = row_arg;
     SKIP_LINE_IF_NO_MULTI(fmt);
     mock_t *m = mock_new();
 #if DARAN_ENABLE_MULTI_MOTOR
@@ -38,28 +46,28 @@ static void other_id_case(void **state)
     for (size_t i = 0; i < 3; i++) {
         snprintf(line, sizeof line, fmt, others[i]);
         ASSERT_SILENT(m, line);
-        assert_int_equal(m->n_fwd, 0);
+        TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
     }
     /* with a forward hook the same line is forwarded as received */
     mock_enable_forward(m);
     snprintf(line, sizeof line, fmt, 7);
     ASSERT_SILENT(m, line);
-    assert_int_equal(m->n_fwd, 1);
-    assert_int_equal(m->fwd[0].id, 7);
-    assert_string_equal(m->fwd[0].line, line);
+    TEST_ASSERT_EQUAL_INT64(1, m->n_fwd);
+    TEST_ASSERT_EQUAL_INT64(7, m->fwd[0].id);
+    TEST_ASSERT_EQUAL_STRING(line, m->fwd[0].line);
     /* and with a trailing space and a checksum field, still as received */
     char raw[96], cks[96];
     snprintf(raw, sizeof raw, fmt, 7);
     strcat(raw, " ");
     mock_with_checksum(cks, sizeof cks, raw);
     ASSERT_SILENT(m, cks);
-    assert_int_equal(m->n_fwd, 1);
-    assert_string_equal(m->fwd[0].line, cks);
+    TEST_ASSERT_EQUAL_INT64(1, m->n_fwd);
+    TEST_ASSERT_EQUAL_STRING(cks, m->fwd[0].line);
 }
 
-static void own_and_common_id_case(void **state)
+static void own_and_common_id_case(const void *row_arg)
 {
-    const char *fmt = *state;
+    const char *fmt = row_arg;
     SKIP_LINE_IF_NO_MULTI(fmt);
     char line[80];
     for (int id = 1; id >= 0; id--) {
@@ -89,65 +97,61 @@ static void own_and_common_id_case(void **state)
         mock_check(m->n_fwd == want_fwd, m, __FILE__, __LINE__, "expected %zu forwards, got %zu",
                    want_fwd, m->n_fwd);
         if (want_fwd) {
-            assert_int_equal(m->fwd[0].id, 0);
-            assert_string_equal(m->fwd[0].line, line);
+            TEST_ASSERT_EQUAL_INT64(0, m->fwd[0].id);
+            TEST_ASSERT_EQUAL_STRING(line, m->fwd[0].line);
         }
     }
 }
 
-static void test_broadcast_is_forwarded_even_when_refused_here(void **state)
+static void test_broadcast_is_forwarded_even_when_refused_here(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     mock_enable_forward(m);
     ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
     ASSERT_ERROR(m, "t 0 10", "estop active");
-    assert_int_equal(m->n_fwd, 1);
-    assert_string_equal(m->fwd[0].line, "t 0 10");
+    TEST_ASSERT_EQUAL_INT64(1, m->n_fwd);
+    TEST_ASSERT_EQUAL_STRING("t 0 10", m->fwd[0].line);
     /* a broadcast start without a preset here: silent, still forwarded */
     m = mock_new();
     mock_enable_forward(m);
     ASSERT_SILENT(m, "mq 0 1");
-    assert_int_equal(m->n_fwd, 1);
-    assert_int_equal(m->fwd[0].id, 0);
-    assert_string_equal(m->fwd[0].line, "mq 0 1");
+    TEST_ASSERT_EQUAL_INT64(1, m->n_fwd);
+    TEST_ASSERT_EQUAL_INT64(0, m->fwd[0].id);
+    TEST_ASSERT_EQUAL_STRING("mq 0 1", m->fwd[0].line);
 }
 
-static void test_lines_refused_before_the_id_are_not_forwarded(void **state)
+static void test_lines_refused_before_the_id_are_not_forwarded(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_enable_forward(m);
     mock_send_line(m, "t 2 10 *1");
-    assert_int_equal(m->n_fwd, 0);
+    TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
     ASSERT_ERROR(m, "t 2 10 *x", "invalid checksum");
-    assert_int_equal(m->n_fwd, 0);
+    TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
     ASSERT_ERROR(m, "x 2", "unknown command");
-    assert_int_equal(m->n_fwd, 0);
+    TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
     ASSERT_ERROR(m, "t 2 1\x01", "invalid character");
-    assert_int_equal(m->n_fwd, 0);
+    TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
     ASSERT_ERROR(m, "t 99 10", "invalid motor");
-    assert_int_equal(m->n_fwd, 0);
+    TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
     ASSERT_ERROR(m, "x 0", "unknown command");
-    assert_int_equal(m->n_fwd, 0);
+    TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
 }
 
-static void test_forward_hook_can_be_removed(void **state)
+static void test_forward_hook_can_be_removed(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_enable_forward(m);
     ASSERT_SILENT(m, "t 2 10");
-    assert_int_equal(m->n_fwd, 1);
+    TEST_ASSERT_EQUAL_INT64(1, m->n_fwd);
     daran_set_forward(&m->drive, NULL, NULL);
     ASSERT_SILENT(m, "t 2 10");
-    assert_int_equal(m->n_fwd, 0);
+    TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
 }
 
-static void test_lines_for_another_drive_are_forwarded_unchecked(void **state)
+static void test_lines_for_another_drive_are_forwarded_unchecked(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     mock_enable_forward(m);
@@ -156,44 +160,41 @@ static void test_lines_for_another_drive_are_forwarded_unchecked(void **state)
                                         "r nope 2"};
     for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
         ASSERT_SILENT(m, lines[i]);
-        assert_int_equal(m->n_fwd, 1);
-        assert_int_equal(m->fwd[0].id, 2);
-        assert_string_equal(m->fwd[0].line, lines[i]);
+        TEST_ASSERT_EQUAL_INT64(1, m->n_fwd);
+        TEST_ASSERT_EQUAL_INT64(2, m->fwd[0].id);
+        TEST_ASSERT_EQUAL_STRING(lines[i], m->fwd[0].line);
     }
 }
 
-static void test_reads_with_id_0_are_answered(void **state)
+static void test_reads_with_id_0_are_answered(void)
 {
-    (void)state;
     mock_t *m = mock_new_id(9);
     m->props[DARAN_PROP_POS_ESTIMATE].f32 = 3.5f;
-    assert_string_equal(ASSERT_QUERY(m, "f 0"), "3.5 0\n");
-    assert_string_equal(ASSERT_QUERY(m, "g 0"), "24 0\n");
+    TEST_ASSERT_EQUAL_STRING("3.5 0\n", ASSERT_QUERY(m, "f 0"));
+    TEST_ASSERT_EQUAL_STRING("24 0\n", ASSERT_QUERY(m, "g 0"));
     mock_send_line(m, "e 0");
     ASSERT_REPLY(m, "axis: 0\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
                     "motor_thermistor: 0\ncan: 0\n");
     ASSERT_NO_EFFECT(m);
-    assert_string_equal(ASSERT_QUERY(m, "i 0"), "10203 7 1234567890123\n");
-    assert_string_equal(ASSERT_QUERY(m, "r axis0.config.can_node_id"), "9\n");
-    assert_string_equal(ASSERT_QUERY(m, "r vbus_voltage 0"), "24\n");
-    assert_string_equal(ASSERT_QUERY(m, "r vbus_voltage"), "24\n");
+    TEST_ASSERT_EQUAL_STRING("10203 7 1234567890123\n", ASSERT_QUERY(m, "i 0"));
+    TEST_ASSERT_EQUAL_STRING("9\n", ASSERT_QUERY(m, "r axis0.config.can_node_id"));
+    TEST_ASSERT_EQUAL_STRING("24\n", ASSERT_QUERY(m, "r vbus_voltage 0"));
+    TEST_ASSERT_EQUAL_STRING("24\n", ASSERT_QUERY(m, "r vbus_voltage"));
 }
 
-static void test_node_id_change_moves_the_drive_to_the_new_id(void **state)
+static void test_node_id_change_moves_the_drive_to_the_new_id(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     daran_value_t v = ASSERT_SET(m, "w axis0.config.can_node_id 5", DARAN_PROP_CAN_NODE_ID);
-    assert_int_equal(v.u32, 5);
+    TEST_ASSERT_EQUAL_INT64(5, v.u32);
     ASSERT_SILENT(m, "t 1 10");
     ASSERT_MOVE(m, "t 5 10");
-    assert_string_equal(ASSERT_QUERY(m, "f 5"), "0 0\n");
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "f 5"));
     ASSERT_MOVE(m, "t 0 10");
 }
 
-static void test_every_id_from_1_to_63_addresses_a_drive_with_that_id(void **state)
+static void test_every_id_from_1_to_63_addresses_a_drive_with_that_id(void)
 {
-    (void)state;
     for (uint32_t id = 1; id <= DARAN_MOTOR_ID_MAX; id++) {
         mock_t *m = mock_new_id(id);
         char line[32];
@@ -206,9 +207,8 @@ static void test_every_id_from_1_to_63_addresses_a_drive_with_that_id(void **sta
 
 /* ---- several instances ---- */
 
-static void test_two_drives_on_one_link_answer_only_their_own_lines(void **state)
+static void test_two_drives_on_one_link_answer_only_their_own_lines(void)
 {
-    (void)state;
     mock_t *a = mock_new_slot(0, 1), *b = mock_new_slot(1, 2);
     a->props[DARAN_PROP_POS_ESTIMATE].f32 = 11.0f;
     b->props[DARAN_PROP_POS_ESTIMATE].f32 = 22.0f;
@@ -217,24 +217,23 @@ static void test_two_drives_on_one_link_answer_only_their_own_lines(void **state
     const char *stream = "f 1\nf 2\nt 2 7\nt 1 3\ne 0\nx 3\n";
     /* the same bytes reach both, one at a time, each polled in turn */
     for (const char *c = stream; *c; c++) {
-        assert_true(daran_rx_byte(&a->drive, (uint8_t)*c));
+        TEST_ASSERT_TRUE(daran_rx_byte(&a->drive, (uint8_t)*c));
         (void)daran_poll(&a->drive);
-        assert_true(daran_rx_byte(&b->drive, (uint8_t)*c));
+        TEST_ASSERT_TRUE(daran_rx_byte(&b->drive, (uint8_t)*c));
         (void)daran_poll(&b->drive);
     }
     ASSERT_REPLY(a, "11 0\naxis: 0\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
                     "motor_thermistor: 0\ncan: 0\nerror: unknown command\n");
     ASSERT_REPLY(b, "22 0\naxis: 0\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
                     "motor_thermistor: 0\ncan: 0\nerror: unknown command\n");
-    assert_int_equal(mock_count(a, MOCK_CALL_MOVE), 1);
-    assert_true(a->calls[0].move.pos_deg == 3.0f);
-    assert_int_equal(mock_count(b, MOCK_CALL_MOVE), 1);
-    assert_true(b->calls[0].move.pos_deg == 7.0f);
+    TEST_ASSERT_EQUAL_INT64(1, mock_count(a, MOCK_CALL_MOVE));
+    TEST_ASSERT_TRUE(a->calls[0].move.pos_deg == 3.0f);
+    TEST_ASSERT_EQUAL_INT64(1, mock_count(b, MOCK_CALL_MOVE));
+    TEST_ASSERT_TRUE(b->calls[0].move.pos_deg == 7.0f);
 }
 
-static void test_interleaved_bytes_of_different_streams_do_not_mix(void **state)
+static void test_interleaved_bytes_of_different_streams_do_not_mix(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *a = mock_new_slot(0, 1), *b = mock_new_slot(1, 2), *c = mock_new_slot(2, 3);
     a->props[DARAN_PROP_VBUS_VOLTAGE].f32 = 12.0f;
@@ -264,10 +263,10 @@ static void test_interleaved_bytes_of_different_streams_do_not_mix(void **state)
     ASSERT_REPLY(a, "12 0\n");
     ASSERT_REPLY(b, "48 0\n");
     ASSERT_REPLY(c, "error: estop active\n");
-    assert_int_equal(mock_count(a, MOCK_CALL_MOVE), 1);
-    assert_true(a->calls[0].move.pos_deg == 10.0f);
-    assert_int_equal(mock_count(b, MOCK_CALL_MOVE), 1);
-    assert_int_equal(mock_count(c, MOCK_CALL_MOVE), 0);
+    TEST_ASSERT_EQUAL_INT64(1, mock_count(a, MOCK_CALL_MOVE));
+    TEST_ASSERT_TRUE(a->calls[0].move.pos_deg == 10.0f);
+    TEST_ASSERT_EQUAL_INT64(1, mock_count(b, MOCK_CALL_MOVE));
+    TEST_ASSERT_EQUAL_INT64(0, mock_count(c, MOCK_CALL_MOVE));
     /* the estop of drive 3 did not reach the others */
     ASSERT_MOVE(a, "t 1 2");
     ASSERT_MOVE(b, "t 2 2");
@@ -276,7 +275,8 @@ static void test_interleaved_bytes_of_different_streams_do_not_mix(void **state)
 int main(void)
 {
     static mock_suite_t s;
-#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    UNITY_BEGIN();
+#define ADD(fn) mock_suite_add_test(&s, fn)
     for (size_t i = 0; i < N_WORDS; i++)
         mock_suite_add(&s, other_id_case, (void *)(uintptr_t)per_word[i],
                        "test_\"%s\"_for_another_id_is_silent_and_forwarded", per_word[i]);
@@ -292,5 +292,6 @@ int main(void)
     ADD(test_every_id_from_1_to_63_addresses_a_drive_with_that_id);
     ADD(test_two_drives_on_one_link_answer_only_their_own_lines);
     ADD(test_interleaved_bytes_of_different_streams_do_not_mix);
-    return mock_suite_run(&s, "addressing");
+    mock_suite_run(&s);
+    return UNITY_END();
 }

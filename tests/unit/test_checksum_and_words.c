@@ -5,53 +5,56 @@
 
 #include "mock_hal.h"
 
+void setUp(void)
+{
+}
+
+void tearDown(void)
+{
+}
+
 /* ---- checksum ---- */
 
-static void test_spec_example_t_with_checksum_is_accepted(void **state)
+static void test_spec_example_t_with_checksum_is_accepted(void)
 {
-    (void)state;
     mock_t *m = mock_new();
-    assert_int_equal(mock_xor("t 1 10 0 25 "), 83);
+    TEST_ASSERT_EQUAL_INT64(83, mock_xor("t 1 10 0 25 "));
     const daran_move_t *mv = ASSERT_MOVE(m, "t 1 10 0 25 *83");
     ASSERT_MOVE_EQUALS(m, mv, {DARAN_MOVE_FILTERED_POSITION, DARAN_GIVEN_RATE, 10, 0, 0, 25, 0, 0});
 }
 
-static void test_spec_example_f_with_checksum_answers_with_checksum(void **state)
+static void test_spec_example_f_with_checksum_answers_with_checksum(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_ESTIMATE].f32 = 12.5f;
     m->props[DARAN_PROP_VEL_ESTIMATE].f32 = -3.0f;
     char want[64];
     mock_reply_line(want, sizeof want, "12.5 -3", true);
     const char *got = ASSERT_QUERY(m, "f 1 *87");
-    assert_string_equal(got, want);
+    TEST_ASSERT_EQUAL_STRING(want, got);
 }
 
-static void test_spec_example_write_with_checksum_is_accepted(void **state)
+static void test_spec_example_write_with_checksum_is_accepted(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     daran_value_t v = ASSERT_SET(m, "w axis0.config.can_node_id 5 *58", DARAN_PROP_CAN_NODE_ID);
-    assert_int_equal(v.u32, 5);
+    TEST_ASSERT_EQUAL_INT64(5, v.u32);
 }
 
-static void test_checksum_may_follow_the_last_field_directly(void **state)
+static void test_checksum_may_follow_the_last_field_directly(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 30 1.4142135623730951 10 *24");
     const daran_move_t *mv = ASSERT_MOVE(m, "mq 0 1*29");
-    assert_int_equal(mv->kind, DARAN_MOVE_TRAPEZOID);
+    TEST_ASSERT_EQUAL_INT64(DARAN_MOVE_TRAPEZOID, mv->kind);
     char line[32];
     snprintf(line, sizeof line, "t 1 10*%u", mock_xor("t 1 10"));
     ASSERT_MOVE(m, line);
 }
 
-static void test_checksum_mismatch_answers_with_a_checksum_and_has_no_effect(void **state)
+static void test_checksum_mismatch_answers_with_a_checksum_and_has_no_effect(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char want[80];
     mock_reply_line(want, sizeof want, "error: checksum mismatch", true);
@@ -65,9 +68,8 @@ static void test_checksum_mismatch_answers_with_a_checksum_and_has_no_effect(voi
     ASSERT_NO_EFFECT(m);
 }
 
-static void test_bad_checksum_has_no_effect_on_any_command(void **state)
+static void test_bad_checksum_has_no_effect_on_any_command(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     static const char *const lines[] = {"st 1", "ss 1", "w axis0.config.can_node_id 5",
@@ -84,9 +86,8 @@ static void test_bad_checksum_has_no_effect_on_any_command(void **state)
     ASSERT_ERROR(m, "mt 1 0", "no preset");
 }
 
-static void test_checksum_errors_are_answered_for_any_motor_id(void **state)
+static void test_checksum_errors_are_answered_for_any_motor_id(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_enable_forward(m);
     char want[80];
@@ -94,18 +95,18 @@ static void test_checksum_errors_are_answered_for_any_motor_id(void **state)
     mock_send_line(m, "t 9 10 *1");
     ASSERT_REPLY(m, want);
     ASSERT_NO_EFFECT(m);
-    assert_int_equal(m->n_fwd, 0);
+    TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
     ASSERT_ERROR(m, "t 9 10 *x", "invalid checksum");
-    assert_int_equal(m->n_fwd, 0);
+    TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
 }
 
 static const char *const malformed_fields[] = {
     "* 5", "*", "*1234", "*256", "*8*7", "*12x", "*-1", "*+5", "*0x1", "* ", "*1 2", "*999",
 };
 
-static void malformed_checksum_case(void **state)
+static void malformed_checksum_case(const void *row_arg)
 {
-    const char *field = *state;
+    const char *field = row_arg;
     mock_t *m = mock_new();
     char line[64];
     snprintf(line, sizeof line, "t 1 10 %s", field);
@@ -116,9 +117,8 @@ static void malformed_checksum_case(void **state)
     ASSERT_REPLY(m, "0 0\n");
 }
 
-static void test_framing_errors_answer_without_a_checksum(void **state)
+static void test_framing_errors_answer_without_a_checksum(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     /* D6: no field was parsed, so no checksum on the reply */
     char line[DARAN_LINE_MAX + 40];
@@ -130,49 +130,45 @@ static void test_framing_errors_answer_without_a_checksum(void **state)
     ASSERT_ERROR(m, line, "line too long");
 }
 
-static void test_whitespace_after_checksum_digits_is_allowed(void **state)
+static void test_whitespace_after_checksum_digits_is_allowed(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char want[64];
     mock_reply_line(want, sizeof want, "0 0", true);
-    assert_string_equal(ASSERT_QUERY(m, "f 1 *87 "), want);
-    assert_string_equal(ASSERT_QUERY(m, "f 1 *87\t"), want);
-    assert_string_equal(ASSERT_QUERY(m, "f 1 *87 \t \r"), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "f 1 *87 "));
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "f 1 *87\t"));
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "f 1 *87 \t \r"));
     ASSERT_MOVE(m, "t 1 10 0 25 *83   ");
 }
 
-static void test_checksum_with_leading_zeros_is_well_formed(void **state)
+static void test_checksum_with_leading_zeros_is_well_formed(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char want[64];
     mock_reply_line(want, sizeof want, "0 0", true);
-    assert_string_equal(ASSERT_QUERY(m, "f 1 *087"), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "f 1 *087"));
     /* "sc 1" XORs to 1 */
     ASSERT_ACTION(m, "sc 1*1", DARAN_ACTION_CLEAR_ERRORS);
     ASSERT_ACTION(m, "sc 1*01", DARAN_ACTION_CLEAR_ERRORS);
     ASSERT_ACTION(m, "sc 1*001", DARAN_ACTION_CLEAR_ERRORS);
 }
 
-static void test_value_reply_checksum_covers_the_payload_and_the_space(void **state)
+static void test_value_reply_checksum_covers_the_payload_and_the_space(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_VBUS_VOLTAGE].f32 = 23.75f;
     m->props[DARAN_PROP_IQ_MEASURED].f32 = -0.5f;
     char line[64], want[64];
     mock_with_checksum(line, sizeof line, "g 1");
     mock_reply_line(want, sizeof want, "23.75 -0.5", true);
-    assert_string_equal(ASSERT_QUERY(m, line), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
     mock_with_checksum(line, sizeof line, "r config.uart_baudrate 1");
     mock_reply_line(want, sizeof want, "115200", true);
-    assert_string_equal(ASSERT_QUERY(m, line), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
 }
 
-static void test_error_reply_to_a_checksummed_line_carries_a_checksum(void **state)
+static void test_error_reply_to_a_checksummed_line_carries_a_checksum(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     static const char *const cases[][2] = {
@@ -197,9 +193,8 @@ static void test_error_reply_to_a_checksummed_line_carries_a_checksum(void **sta
     }
 }
 
-static void test_line_that_is_only_a_checksum_is_an_unknown_command(void **state)
+static void test_line_that_is_only_a_checksum_is_an_unknown_command(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char want[64];
     mock_reply_line(want, sizeof want, "error: unknown command", true);
@@ -213,9 +208,8 @@ static void test_line_that_is_only_a_checksum_is_an_unknown_command(void **state
     ASSERT_NO_EFFECT(m);
 }
 
-static void test_checksummed_silent_commands_stay_silent(void **state)
+static void test_checksummed_silent_commands_stay_silent(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     char line[80];
@@ -225,60 +219,54 @@ static void test_checksummed_silent_commands_stay_silent(void **state)
     ASSERT_SILENT(m, mock_with_checksum(line, sizeof line, "t 5 10"));
 }
 
-static void test_checksum_state_does_not_leak_to_the_next_line(void **state)
+static void test_checksum_state_does_not_leak_to_the_next_line(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     (void)ASSERT_QUERY(m, "f 1 *87");
-    assert_string_equal(ASSERT_QUERY(m, "f 1"), "0 0\n");
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "f 1"));
     mock_send_line(m, "f 1 *88");
     ASSERT_ERROR(m, "x 1", "unknown command");
 }
 
 /* ---- fields ---- */
 
-static void test_multiple_spaces_separate_fields(void **state)
+static void test_multiple_spaces_separate_fields(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     const daran_move_t *mv = ASSERT_MOVE(m, "t  1   10    0     25");
     ASSERT_MOVE_EQUALS(m, mv, {DARAN_MOVE_FILTERED_POSITION, DARAN_GIVEN_RATE, 10, 0, 0, 25, 0, 0});
 }
 
-static void test_tabs_separate_fields(void **state)
+static void test_tabs_separate_fields(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     const daran_move_t *mv = ASSERT_MOVE(m, "t\t1\t10 \t 0\t\t25");
     ASSERT_MOVE_EQUALS(m, mv, {DARAN_MOVE_FILTERED_POSITION, DARAN_GIVEN_RATE, 10, 0, 0, 25, 0, 0});
 }
 
-static void test_leading_and_trailing_blanks_are_ignored(void **state)
+static void test_leading_and_trailing_blanks_are_ignored(void)
 {
-    (void)state;
     mock_t *m = mock_new();
-    assert_string_equal(ASSERT_QUERY(m, "   f 1"), "0 0\n");
-    assert_string_equal(ASSERT_QUERY(m, "\t f 1 \t "), "0 0\n");
-    assert_string_equal(ASSERT_QUERY(m, "f 1 "), "0 0\n");
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "   f 1"));
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "\t f 1 \t "));
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "f 1 "));
     ASSERT_MOVE(m, "  t 1 10 0 25 ");
 }
 
-static void test_trailing_space_before_the_checksum_is_part_of_the_xor(void **state)
+static void test_trailing_space_before_the_checksum_is_part_of_the_xor(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     /* "f 1  " (two spaces) XORs to 87 ^ ' ' = 119 */
     char want[64];
     mock_reply_line(want, sizeof want, "0 0", true);
-    assert_string_equal(ASSERT_QUERY(m, "f 1  *119"), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "f 1  *119"));
     mock_reply_line(want, sizeof want, "error: checksum mismatch", true);
     mock_send_line(m, "f 1  *87");
     ASSERT_REPLY(m, want);
 }
 
-static void test_too_many_fields_is_invalid_command_format(void **state)
+static void test_too_many_fields_is_invalid_command_format(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_ERROR(m, "t 1 10 0 25 1", "invalid command format");
@@ -290,9 +278,8 @@ static void test_too_many_fields_is_invalid_command_format(void **state)
     ASSERT_ERROR(m, "mv 1 0", "invalid command format");
 }
 
-static void test_too_few_fields_is_invalid_command_format(void **state)
+static void test_too_few_fields_is_invalid_command_format(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_ERROR(m, "t 1", "invalid command format");
@@ -306,9 +293,8 @@ static void test_too_few_fields_is_invalid_command_format(void **state)
 
 /* ---- command words ---- */
 
-static void test_command_words_are_case_insensitive(void **state)
+static void test_command_words_are_case_insensitive(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_ACTION(m, "SS 1", DARAN_ACTION_SAVE_CONFIG);
@@ -318,16 +304,15 @@ static void test_command_words_are_case_insensitive(void **state)
     ASSERT_MOVE_EQUALS(m, mv, {DARAN_MOVE_FILTERED_POSITION, 0, 10, 0, 0, 0, 0, 0});
     ASSERT_SILENT(m, "MS 1 10 2 10");
     mv = ASSERT_MOVE(m, "Mq 0 1");
-    assert_int_equal(mv->kind, DARAN_MOVE_TRAPEZOID);
-    assert_string_equal(ASSERT_QUERY(m, "F 1"), "0 0\n");
-    assert_string_equal(ASSERT_QUERY(m, "R config.uart_baudrate 1"), "115200\n");
+    TEST_ASSERT_EQUAL_INT64(DARAN_MOVE_TRAPEZOID, mv->kind);
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "F 1"));
+    TEST_ASSERT_EQUAL_STRING("115200\n", ASSERT_QUERY(m, "R config.uart_baudrate 1"));
     (void)ASSERT_SET(m, "W axis1.output_shaft.input_pos 3", DARAN_PROP_INPUT_POS);
     ASSERT_ACTION(m, "ST 1", DARAN_ACTION_ESTOP);
 }
 
-static void test_every_command_word_works_in_upper_case(void **state)
+static void test_every_command_word_works_in_upper_case(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     static const char *const lines[] = {
         "T 1 10", "Q 1 10", "P 1 10", "V 1 10", "C 1 1", "D 1 0 0 0 0 0", "MS 1 10 0 5",
@@ -349,14 +334,13 @@ static void test_every_command_word_works_in_upper_case(void **state)
     }
 }
 
-static void test_multi_motor_words_follow_the_build_option(void **state)
+static void test_multi_motor_words_follow_the_build_option(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     static const char *const lines[] = {"ms 1 10 0 5", "mt 1 0", "mq 1 1", "mp 1 0", "mv 1",
                                         "mc 1", "ms 2 1 2 3", "mt 0 0"};
     for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
-        assert_true(mock_uses_multi(lines[i]));
+        TEST_ASSERT_TRUE(mock_uses_multi(lines[i]));
         if (DARAN_ENABLE_MULTI_MOTOR) {
             mock_send_line(m, lines[i]);
             mock_check(strstr(m->out, "unknown command") == NULL, m, __FILE__, __LINE__,
@@ -365,15 +349,14 @@ static void test_multi_motor_words_follow_the_build_option(void **state)
             ASSERT_ERROR(m, lines[i], "unknown command");
         }
     }
-    assert_false(mock_uses_multi("m 1"));
-    assert_false(mock_uses_multi("mx 1"));
-    assert_false(mock_uses_multi("msx 1"));
-    assert_true(mock_uses_multi("MQ 0 1*29"));
+    TEST_ASSERT_FALSE(mock_uses_multi("m 1"));
+    TEST_ASSERT_FALSE(mock_uses_multi("mx 1"));
+    TEST_ASSERT_FALSE(mock_uses_multi("msx 1"));
+    TEST_ASSERT_TRUE(mock_uses_multi("MQ 0 1*29"));
 }
 
-static void test_property_paths_are_case_sensitive(void **state)
+static void test_property_paths_are_case_sensitive(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     (void)ASSERT_QUERY(m, "r axis1.motor.current_control.Iq_measured");
     ASSERT_ERROR(m, "r axis1.motor.current_control.iq_measured", "invalid property");
@@ -384,16 +367,15 @@ static void test_property_paths_are_case_sensitive(void **state)
 static const char *const unknown_words[] = {"x 1", "tt 1", "m 1", "s 1", "mm 1", "sss 1", "ff 1",
                                             "t1 1", "1 1", "mx 0", "sa 1", "-t 1", "z 1", "ma 0"};
 
-static void unknown_word_case(void **state)
+static void unknown_word_case(const void *row_arg)
 {
-    const char *line = *state;
+    const char *line = row_arg;
     mock_t *m = mock_new();
     ASSERT_ERROR(m, line, "unknown command");
 }
 
-static void test_command_word_is_checked_before_the_motor_id(void **state)
+static void test_command_word_is_checked_before_the_motor_id(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_ERROR(m, "x", "unknown command");
     ASSERT_ERROR(m, "x 99", "unknown command");
@@ -405,7 +387,8 @@ static void test_command_word_is_checked_before_the_motor_id(void **state)
 int main(void)
 {
     static mock_suite_t s;
-#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    UNITY_BEGIN();
+#define ADD(fn) mock_suite_add_test(&s, fn)
     ADD(test_spec_example_t_with_checksum_is_accepted);
     ADD(test_spec_example_f_with_checksum_answers_with_checksum);
     ADD(test_spec_example_write_with_checksum_is_accepted);
@@ -438,5 +421,6 @@ int main(void)
         mock_suite_add(&s, unknown_word_case, (void *)(uintptr_t)unknown_words[i],
                        "test_\"%s\"_is_an_unknown_command", unknown_words[i]);
     ADD(test_command_word_is_checked_before_the_motor_id);
-    return mock_suite_run(&s, "checksum_and_words");
+    mock_suite_run(&s);
+    return UNITY_END();
 }

@@ -9,6 +9,14 @@
 #include <string.h>
 
 #include "mock_hal.h"
+
+void setUp(void)
+{
+}
+
+void tearDown(void)
+{
+}
 #include "recordings_data.h"
 
 #define F DARAN_MOVE_FILTERED_POSITION
@@ -76,9 +84,9 @@ static const example_t examples[] = {
     {1, "t 1 10 0 25 ", EX_MOVE, {F, GR, 10, 0, 0, 25, 0, 0}, 0, 0, 0, 0, NULL, false},
 };
 
-static void example_case(void **state)
+static void example_case(const void *row_arg)
 {
-    const example_t *e = *state;
+    const example_t *e = row_arg;
     SKIP_LINE_IF_NO_MULTI(e->line);
     mock_t *m = mock_new_id(e->id);
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 42.25f;
@@ -93,12 +101,12 @@ static void example_case(void **state)
     }
     case EX_SET_F32: {
         daran_value_t v = ASSERT_SET(m, e->line, e->prop);
-        assert_true(v.f32 == e->f);
+        TEST_ASSERT_TRUE(v.f32 == e->f);
         break;
     }
     case EX_SET_U32: {
         daran_value_t v = ASSERT_SET(m, e->line, e->prop);
-        assert_int_equal(v.u32, e->u);
+        TEST_ASSERT_EQUAL_INT64(e->u, v.u32);
         break;
     }
     case EX_ACTION: ASSERT_ACTION(m, e->line, e->action); break;
@@ -106,7 +114,7 @@ static void example_case(void **state)
     case EX_REPLY: {
         char want[96];
         mock_reply_line(want, sizeof want, e->reply, e->checksum);
-        assert_string_equal(ASSERT_QUERY(m, e->line), want);
+        TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, e->line));
         break;
     }
     }
@@ -114,9 +122,8 @@ static void example_case(void **state)
 
 /* ---- omitted optional values ---- */
 
-static void test_omitted_optional_values_are_not_given(void **state)
+static void test_omitted_optional_values_are_not_given(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     const daran_move_t *mv = ASSERT_MOVE(m, "q 1 10");
     ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 10, 0, 0, 0, 0, 0});
@@ -138,17 +145,15 @@ static void test_omitted_optional_values_are_not_given(void **state)
     ASSERT_MOVE_EQUALS(m, mv, {C, 0, 0, 0, -2, 0, 0, 0});
 }
 
-static void test_torque_mode_2_is_taken_as_a_ramp(void **state)
+static void test_torque_mode_2_is_taken_as_a_ramp(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     const daran_move_t *mv = ASSERT_MOVE(m, "c 1 0.100000 0.020000 2 ");
     ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.1f, 0.02f, 0, 0});
 }
 
-static void test_motion_ranges_are_checked(void **state)
+static void test_motion_ranges_are_checked(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     /* zero rates are accepted (spec 10.1): see the zero-rate tests below */
     ASSERT_ERROR(m, "t 1 10 0 -1", "value out of range");
@@ -179,33 +184,31 @@ static void assert_positive_zero(const mock_t *m, float rate, int line)
                (double)rate);
 }
 
-static void test_t_with_bandwidth_0_is_accepted_and_keeps_the_bandwidth(void **state)
+static void test_t_with_bandwidth_0_is_accepted_and_keeps_the_bandwidth(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     /* the vendor's set_angle(1, 30) */
     const daran_move_t *mv = ASSERT_MOVE(m, "t 1 30 0 0 ");
     ASSERT_MOVE_EQUALS(m, mv, {F, 0, 30, 0, 0, 0, 0, 0});
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "20\n");
+    TEST_ASSERT_EQUAL_STRING("20\n", ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"));
     mv = ASSERT_MOVE(m, "t 1 -30 5 -0");
     ASSERT_MOVE_EQUALS(m, mv, {F, 0, -30, 0, 0, 0, 0, 0});
     assert_positive_zero(m, mv->rate, __LINE__);
     mv = ASSERT_MOVE(m, "t 1 30 0 0 *102");
     ASSERT_MOVE_EQUALS(m, mv, {F, 0, 30, 0, 0, 0, 0, 0});
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "20\n");
+    TEST_ASSERT_EQUAL_STRING("20\n", ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"));
     /* the same as omitting it */
     mv = ASSERT_MOVE(m, "t 1 30 0");
     ASSERT_MOVE_EQUALS(m, mv, {F, 0, 30, 0, 0, 0, 0, 0});
     /* a positive bandwidth is still given and stored */
     mv = ASSERT_MOVE(m, "t 1 30 0 25");
     ASSERT_MOVE_EQUALS(m, mv, {F, GR, 30, 0, 0, 25, 0, 0});
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "25\n");
+    TEST_ASSERT_EQUAL_STRING("25\n", ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"));
     ASSERT_ERROR(m, "t 1 30 0 -1", "value out of range");
 }
 
-static void test_q_with_acceleration_0_is_accepted_as_a_step_without_cruise(void **state)
+static void test_q_with_acceleration_0_is_accepted_as_a_step_without_cruise(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 = 120.0f;
     m->props[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 = 30.0f;
@@ -213,13 +216,13 @@ static void test_q_with_acceleration_0_is_accepted_as_a_step_without_cruise(void
     /* rate 0 given, cruise not given and 0: "as fast as the drive can" */
     const daran_move_t *mv = ASSERT_MOVE(m, "q 1 10 30 0 ");
     ASSERT_MOVE_EQUALS(m, mv, {Q, GR, 10, 0, 0, 0, 0, 0});
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_vel_limit"), "120\n");
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"), "0\n");
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_decel_limit"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("120\n", ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_vel_limit"));
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"));
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_decel_limit"));
     mv = ASSERT_MOVE(m, "q 1 -10 30 -0");
     ASSERT_MOVE_EQUALS(m, mv, {Q, GR, -10, 0, 0, 0, 0, 0});
     assert_positive_zero(m, mv->rate, __LINE__);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"));
     mv = ASSERT_MOVE(m, "q 1 10 30 0 *82");
     ASSERT_MOVE_EQUALS(m, mv, {Q, GR, 10, 0, 0, 0, 0, 0});
     /* a cruise of 0 stays refused, with or without an acceleration */
@@ -229,19 +232,18 @@ static void test_q_with_acceleration_0_is_accepted_as_a_step_without_cruise(void
     ASSERT_ERROR(m, "q 1 10 30 -1", "value out of range");
 }
 
-static void test_v_mode_2_with_ramp_0_is_accepted_with_rate_0(void **state)
+static void test_v_mode_2_with_ramp_0_is_accepted_with_rate_0(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     const daran_move_t *mv = ASSERT_MOVE(m, "v 1 60 0 2 ");
     ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, 60, 0, 0, 0, 0});
     assert_positive_zero(m, mv->rate, __LINE__);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.vel_ramp_rate"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.vel_ramp_rate"));
     m->props[DARAN_PROP_VEL_RAMP_RATE].f32 = 60.0f;
     mv = ASSERT_MOVE(m, "v 1 -60 -0 2");
     ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, -60, 0, 0, 0, 0});
     assert_positive_zero(m, mv->rate, __LINE__);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.vel_ramp_rate"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.vel_ramp_rate"));
     mv = ASSERT_MOVE(m, "v 1 60 0 2 *99");
     ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, 60, 0, 0, 0, 0});
     ASSERT_ERROR(m, "v 1 60 -1 2", "value out of range");
@@ -251,24 +253,23 @@ static void test_v_mode_2_with_ramp_0_is_accepted_with_rate_0(void **state)
     ASSERT_MOVE_EQUALS(m, mv, {V, 0, 0, 60, -1, 0, 0, 0});
 }
 
-static void test_c_ramp_0_is_accepted_with_rate_0_in_modes_6_and_2(void **state)
+static void test_c_ramp_0_is_accepted_with_rate_0_in_modes_6_and_2(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     const daran_move_t *mv = ASSERT_MOVE(m, "c 1 0.05 0 6 ");
     ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.05f, 0, 0, 0});
     assert_positive_zero(m, mv->rate, __LINE__);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"));
     m->props[DARAN_PROP_TORQUE_RAMP_RATE].f32 = 1.0f;
     mv = ASSERT_MOVE(m, "c 1 0.05 0 2");
     ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.05f, 0, 0, 0});
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"));
     mv = ASSERT_MOVE(m, "c 1 -0.05 -0 6");
     ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, -0.05f, 0, 0, 0});
     assert_positive_zero(m, mv->rate, __LINE__);
     mv = ASSERT_MOVE(m, "c 1 0.05 -0 2");
     assert_positive_zero(m, mv->rate, __LINE__);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"));
     mv = ASSERT_MOVE(m, "c 1 0.05 0 6 *111");
     ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.05f, 0, 0, 0});
     ASSERT_ERROR(m, "c 1 0.05 -1 6", "value out of range");
@@ -317,7 +318,7 @@ static void check_timed_move(const mock_t *m, const daran_move_t *mv, float targ
                              float duration, float acc, int line)
 {
     timed_t t = timed_expect(dist, duration, acc);
-    assert_true(t.feasible);
+    TEST_ASSERT_TRUE(t.feasible);
     mock_check(mv->kind == Q, m, __FILE__, line, "expected a trapezoid, got kind %d", (int)mv->kind);
     mock_check(mv->given == (GV | GR), m, __FILE__, line, "expected VEL|RATE given, got %u",
                (unsigned)mv->given);
@@ -326,9 +327,8 @@ static void check_timed_move(const mock_t *m, const daran_move_t *mv, float targ
     assert_close(m, mv->rate, t.rate, "rate", line);
 }
 
-static void test_spec_mq_example_moves_each_drive_to_arrive_together(void **state)
+static void test_spec_mq_example_moves_each_drive_to_arrive_together(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *a = mock_new_slot(0, 1), *b = mock_new_slot(1, 2);
     a->props[DARAN_PROP_POS_SETPOINT].f32 = 30.0f;
@@ -347,9 +347,8 @@ static void test_spec_mq_example_moves_each_drive_to_arrive_together(void **stat
     assert_close(a, a->calls[0].move.vel_rpm, v / 6.0, "vel_rpm by hand", __LINE__);
 }
 
-static void test_mq_absolute_uses_the_distance_from_the_setpoint(void **state)
+static void test_mq_absolute_uses_the_distance_from_the_setpoint(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 10.0f;
@@ -362,9 +361,8 @@ static void test_mq_absolute_uses_the_distance_from_the_setpoint(void **state)
     check_timed_move(m, mv, 40.0f, -60.0f, 2.5f, 10.0f, __LINE__);
 }
 
-static void test_infeasible_mq_is_refused_with_no_motion(void **state)
+static void test_infeasible_mq_is_refused_with_no_motion(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 100 1 1");
@@ -373,9 +371,8 @@ static void test_infeasible_mq_is_refused_with_no_motion(void **state)
     ASSERT_ERROR(m, "mq 1 1", "trajectory infeasible");
 }
 
-static void test_mq_within_the_1e4_shortfall_runs_the_exact_triangle(void **state)
+static void test_mq_within_the_1e4_shortfall_runs_the_exact_triangle(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     /* A = 60, D = 30: the minimum duration is sqrt(2); 1.4142 falls short by 2e-5 relative */
@@ -387,9 +384,8 @@ static void test_mq_within_the_1e4_shortfall_runs_the_exact_triangle(void **stat
     assert_close(m, mv->rate, 4.0 * 30.0 / ((double)T * T) / 6.0, "rate = 4D/T^2/6", __LINE__);
 }
 
-static void test_mq_with_the_vendor_17_digit_minimum_duration_is_accepted(void **state)
+static void test_mq_with_the_vendor_17_digit_minimum_duration_is_accepted(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 30 1.4142135623730951 10 ");
@@ -400,32 +396,32 @@ static void test_mq_with_the_vendor_17_digit_minimum_duration_is_accepted(void *
     assert_close(m, mv->pos_deg, 30.0, "pos_deg", __LINE__);
 }
 
-static void test_mq_with_zero_distance_is_accepted(void **state)
+static void test_mq_with_zero_distance_is_accepted(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 5.0f;
     ASSERT_SILENT(m, "ms 1 0 2 10");
     const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 1");
-    assert_int_equal(mv->kind, Q);
-    assert_true(mv->pos_deg == 5.0f);
+    TEST_ASSERT_EQUAL_INT64(Q, mv->kind);
+    TEST_ASSERT_TRUE(mv->pos_deg == 5.0f);
     /* daran_hal.h: a given cruise and accel are > 0, even for a move that is already done */
-    if (mv->given & GV)
-        assert_true(mv->vel_rpm > 0.0f);
-    if (mv->given & GR)
-        assert_true(mv->rate > 0.0f);
+    if (mv->given & GV) {
+        TEST_ASSERT_TRUE(mv->vel_rpm > 0.0f);
+    }
+    if (mv->given & GR) {
+        TEST_ASSERT_TRUE(mv->rate > 0.0f);
+    }
     /* D31: nothing to plan, the drive keeps its settings */
     ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 5, 0, 0, 0, 0, 0});
     ASSERT_SILENT(m, "ms 1 5 2 10");
     mv = ASSERT_MOVE(m, "mq 1 0");
-    assert_true(mv->pos_deg == 5.0f);
+    TEST_ASSERT_TRUE(mv->pos_deg == 5.0f);
     ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 5, 0, 0, 0, 0, 0});
 }
 
-static void test_mq_negative_duration_or_accel_is_out_of_range(void **state)
+static void test_mq_negative_duration_or_accel_is_out_of_range(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     static const char *const presets[] = {"ms 1 10 -1 10", "ms 1 10 2 -3", "ms 1 10 -1e-45 10",
@@ -440,9 +436,8 @@ static void test_mq_negative_duration_or_accel_is_out_of_range(void **state)
 
 /* Spec 10.1: the vendor library computes duration 0 when every drive already
  * stands at its target; a drive that must move cannot do it in no time. */
-static void test_mq_zero_duration_or_accel_with_a_distance_is_infeasible(void **state)
+static void test_mq_zero_duration_or_accel_with_a_distance_is_infeasible(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 20.0f;
@@ -455,12 +450,11 @@ static void test_mq_zero_duration_or_accel_with_a_distance_is_infeasible(void **
     }
     /* a refused start keeps its preset (D16): it still runs as another kind */
     const daran_move_t *mv = ASSERT_MOVE(m, "mp 1 0");
-    assert_true(mv->pos_deg == 30.0f);
+    TEST_ASSERT_TRUE(mv->pos_deg == 30.0f);
 }
 
-static void test_mq_zero_duration_or_accel_at_zero_distance_is_a_trapezoid_in_place(void **state)
+static void test_mq_zero_duration_or_accel_at_zero_distance_is_a_trapezoid_in_place(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 20.0f;
@@ -483,8 +477,8 @@ static void test_mq_zero_duration_or_accel_at_zero_distance_is_a_trapezoid_in_pl
     m->props[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 = 10.0f;
     ASSERT_SILENT(m, "ms 1 20 0 0");
     (void)ASSERT_MOVE(m, "mq 1 0");
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_vel_limit"), "90\n");
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"), "10\n");
+    TEST_ASSERT_EQUAL_STRING("90\n", ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_vel_limit"));
+    TEST_ASSERT_EQUAL_STRING("10\n", ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"));
 }
 
 /* ---- mq under traj_mode 1 (trapezoid) and 2 (S-curve), spec 10.3 ----
@@ -518,12 +512,11 @@ static void assert_hand_worked(const mock_t *m, const daran_move_t *mv, float ta
                "rate: expected %.9g, got %.9g", rate, (double)mv->rate);
 }
 
-static void test_mq_trapezoid_cruise_is_the_hand_worked_value(void **state)
+static void test_mq_trapezoid_cruise_is_the_hand_worked_value(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
-    assert_int_equal(m->props[DARAN_PROP_TRAJ_MODE].u32, 1); /* the mock's default */
+    TEST_ASSERT_EQUAL_INT64(1, m->props[DARAN_PROP_TRAJ_MODE].u32); /* the mock's default */
     ASSERT_SILENT(m, "ms 1 90 2 60");
     const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
     assert_hand_worked(m, mv, 90, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
@@ -535,9 +528,8 @@ static void test_mq_trapezoid_cruise_is_the_hand_worked_value(void **state)
     assert_hand_worked(m, mv, 0, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
 }
 
-static void test_mq_s_curve_cruise_is_the_hand_worked_value(void **state)
+static void test_mq_s_curve_cruise_is_the_hand_worked_value(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
@@ -550,7 +542,7 @@ static void test_mq_s_curve_cruise_is_the_hand_worked_value(void **state)
     mv = ASSERT_MOVE(m, "mq 0 1");
     assert_hand_worked(m, mv, 10, HAND_S_CURVE_RPM, 60, GV | GR, __LINE__);
     /* the S-curve needs the faster cruise for the same arrival */
-    assert_true(HAND_S_CURVE_RPM > HAND_TRAPEZOID_RPM);
+    TEST_ASSERT_TRUE(HAND_S_CURVE_RPM > HAND_TRAPEZOID_RPM);
     /* other numbers against the model in double */
     static const float cases[][3] = {{120, 5, 10}, {30, 3, 10}, {1, 0.5f, 100}, {720, 10, 30}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -561,15 +553,14 @@ static void test_mq_s_curve_cruise_is_the_hand_worked_value(void **state)
         ASSERT_SILENT(m, line);
         mv = ASSERT_MOVE(m, "mq 1 0");
         timed_t t = timed_expect_shape(cases[i][0], cases[i][1], cases[i][2], true);
-        assert_true(t.feasible);
+        TEST_ASSERT_TRUE(t.feasible);
         assert_close(m, mv->vel_rpm, t.vel_rpm, "S-curve vel_rpm", __LINE__);
         assert_close(m, mv->rate, t.rate, "S-curve rate", __LINE__);
     }
 }
 
-static void test_mq_s_curve_within_the_1e4_shortfall_runs_the_exact_triangle(void **state)
+static void test_mq_s_curve_within_the_1e4_shortfall_runs_the_exact_triangle(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
@@ -589,9 +580,8 @@ static void test_mq_s_curve_within_the_1e4_shortfall_runs_the_exact_triangle(voi
     assert_close(m, mv->rate, 60.0, "rate", __LINE__);
 }
 
-static void test_mq_feasible_as_a_trapezoid_is_infeasible_as_an_s_curve(void **state)
+static void test_mq_feasible_as_a_trapezoid_is_infeasible_as_an_s_curve(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     /* D = 90, A = 360, T = 1.4 s: A^2 T^2 = 254016 >= 4AD = 129600 (trapezoid)
@@ -613,9 +603,8 @@ static void test_mq_feasible_as_a_trapezoid_is_infeasible_as_an_s_curve(void **s
 }
 
 /* The planner reads traj_mode through the HAL (D31). */
-static void test_mq_traj_mode_read_failure_answers_motor_fault_and_keeps_the_preset(void **state)
+static void test_mq_traj_mode_read_failure_answers_motor_fault_and_keeps_the_preset(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 90 2 60");
@@ -625,9 +614,8 @@ static void test_mq_traj_mode_read_failure_answers_motor_fault_and_keeps_the_pre
     assert_hand_worked(m, mv, 90, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
 }
 
-static void test_mq_on_a_port_without_traj_mode_plans_a_trapezoid(void **state)
+static void test_mq_on_a_port_without_traj_mode_plans_a_trapezoid(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_TRAJ_MODE].u32 = 2;
@@ -637,9 +625,8 @@ static void test_mq_on_a_port_without_traj_mode_plans_a_trapezoid(void **state)
     assert_hand_worked(m, mv, 90, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
 }
 
-static void test_q_and_mq_are_planned_by_the_drive_not_the_core(void **state)
+static void test_q_and_mq_are_planned_by_the_drive_not_the_core(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     /* q passes its values on whatever traj_mode says: the HAL shapes the profile */
     (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
@@ -647,9 +634,8 @@ static void test_q_and_mq_are_planned_by_the_drive_not_the_core(void **state)
     ASSERT_MOVE_EQUALS(m, mv, {Q, GV | GR, 90, 30, 0, 60, 0, 0});
 }
 
-static void test_mt_starts_a_filtered_move_with_the_preset_bandwidth(void **state)
+static void test_mt_starts_a_filtered_move_with_the_preset_bandwidth(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 7.0f;
@@ -663,7 +649,7 @@ static void test_mt_starts_a_filtered_move_with_the_preset_bandwidth(void **stat
     ASSERT_SILENT(m, "ms 1 10 99 0");
     mv = ASSERT_MOVE(m, "mt 1 0");
     ASSERT_MOVE_EQUALS(m, mv, {F, 0, 10, 0, 0, 0, 0, 0});
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "5\n");
+    TEST_ASSERT_EQUAL_STRING("5\n", ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"));
     ASSERT_SILENT(m, "ms 1 10 0 -0");
     mv = ASSERT_MOVE(m, "mt 0 1");
     ASSERT_MOVE_EQUALS(m, mv, {F, 0, 20, 0, 0, 0, 0, 0});
@@ -671,9 +657,8 @@ static void test_mt_starts_a_filtered_move_with_the_preset_bandwidth(void **stat
     ASSERT_ERROR(m, "mt 1 0", "value out of range");
 }
 
-static void test_mt_with_preset_bandwidth_0_is_the_vendor_set_angles_default(void **state)
+static void test_mt_with_preset_bandwidth_0_is_the_vendor_set_angles_default(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 30.0f;
@@ -681,12 +666,11 @@ static void test_mt_with_preset_bandwidth_0_is_the_vendor_set_angles_default(voi
     ASSERT_SILENT(m, "ms 1 10 0 0 ");
     const daran_move_t *mv = ASSERT_MOVE(m, "mt 0 1");
     ASSERT_MOVE_EQUALS(m, mv, {F, 0, 40, 0, 0, 0, 0, 0});
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"), "20\n");
+    TEST_ASSERT_EQUAL_STRING("20\n", ASSERT_QUERY(m, "r axis1.controller.config.input_filter_bandwidth"));
 }
 
-static void test_mp_starts_passthrough_with_the_preset_feed_forwards(void **state)
+static void test_mp_starts_passthrough_with_the_preset_feed_forwards(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = -4.0f;
@@ -698,9 +682,8 @@ static void test_mp_starts_passthrough_with_the_preset_feed_forwards(void **stat
     ASSERT_MOVE_EQUALS(m, mv, {P, 0, 20, 5, 3, 0, 0, 0});
 }
 
-static void test_mv_starts_velocity_by_the_preset_mode(void **state)
+static void test_mv_starts_velocity_by_the_preset_mode(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 20 3 1");
@@ -717,16 +700,15 @@ static void test_mv_starts_velocity_by_the_preset_mode(void **state)
     mv = ASSERT_MOVE(m, "mv 0");
     ASSERT_MOVE_EQUALS(m, mv, {VR, 0, 0, 60, 0, 0, 0, 0});
     assert_positive_zero(m, mv->rate, __LINE__);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.vel_ramp_rate"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.vel_ramp_rate"));
     ASSERT_SILENT(m, "ms 1 20 -1 2");
     ASSERT_ERROR(m, "mv 1", "value out of range");
     ASSERT_SILENT(m, "ms 1 20 0 7");
     ASSERT_ERROR(m, "mv 1", "invalid mode");
 }
 
-static void test_mc_starts_torque_by_the_preset_mode(void **state)
+static void test_mc_starts_torque_by_the_preset_mode(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 0.5 0 1");
@@ -746,16 +728,15 @@ static void test_mc_starts_torque_by_the_preset_mode(void **state)
     mv = ASSERT_MOVE(m, "mc 0");
     ASSERT_MOVE_EQUALS(m, mv, {CR, 0, 0, 0, 0.05f, 0, 0, 0});
     assert_positive_zero(m, mv->rate, __LINE__);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.output_shaft.torque_ramp_rate"));
     ASSERT_SILENT(m, "ms 1 0.5 -2 6");
     ASSERT_ERROR(m, "mc 1", "value out of range");
     ASSERT_SILENT(m, "ms 1 0.5 0 5");
     ASSERT_ERROR(m, "mc 1", "invalid mode");
 }
 
-static void test_ms_stores_only_finite_values_and_makes_no_hal_call(void **state)
+static void test_ms_stores_only_finite_values_and_makes_no_hal_call(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 1 2 3");
@@ -765,9 +746,8 @@ static void test_ms_stores_only_finite_values_and_makes_no_hal_call(void **state
     ASSERT_ERROR(m, "ms 1 1 2", "invalid command format");
 }
 
-static void test_a_later_ms_replaces_the_preset(void **state)
+static void test_a_later_ms_replaces_the_preset(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
@@ -776,9 +756,8 @@ static void test_a_later_ms_replaces_the_preset(void **state)
     ASSERT_MOVE_EQUALS(m, mv, {F, GR, 20, 0, 0, 6, 0, 0});
 }
 
-static void test_a_preset_for_another_drive_is_not_stored(void **state)
+static void test_a_preset_for_another_drive_is_not_stored(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 2 10 0 5");
@@ -788,9 +767,8 @@ static void test_a_preset_for_another_drive_is_not_stored(void **state)
 
 /* ---- system commands ---- */
 
-static void test_system_commands_make_their_action(void **state)
+static void test_system_commands_make_their_action(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_ACTION(m, "ss 1", DARAN_ACTION_SAVE_CONFIG);
     ASSERT_ACTION(m, "se 1", DARAN_ACTION_ERASE_CONFIG);
@@ -803,9 +781,8 @@ static void test_system_commands_make_their_action(void **state)
     ASSERT_SILENT(m, "ss 2");
 }
 
-static void test_reboot_clears_the_preset(void **state)
+static void test_reboot_clears_the_preset(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
@@ -880,33 +857,29 @@ static void replay(const char *name, const char *const *lines, size_t n)
     }
 }
 
-static void test_every_line_of_the_vendor_python_recording_is_accepted(void **state)
+static void test_every_line_of_the_vendor_python_recording_is_accepted(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     replay("vendor-python-client", recording_python,
            sizeof recording_python / sizeof recording_python[0]);
 }
 
-static void test_every_line_of_the_vendor_stm32_recording_is_accepted(void **state)
+static void test_every_line_of_the_vendor_stm32_recording_is_accepted(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     replay("vendor-stm32-client", recording_stm32,
            sizeof recording_stm32 / sizeof recording_stm32[0]);
 }
 
-static void test_every_line_of_the_vendor_python_defaults_recording_is_accepted(void **state)
+static void test_every_line_of_the_vendor_python_defaults_recording_is_accepted(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     replay("vendor-python-defaults", recording_python_defaults,
            sizeof recording_python_defaults / sizeof recording_python_defaults[0]);
 }
 
-static void test_the_three_recordings_run_back_to_back_on_one_bus(void **state)
+static void test_the_three_recordings_run_back_to_back_on_one_bus(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     /* one bus for all three: state left by one recording must not trip the next */
     static const char *all[sizeof recording_python / sizeof recording_python[0] +
@@ -922,9 +895,8 @@ static void test_the_three_recordings_run_back_to_back_on_one_bus(void **state)
     replay("all recordings", all, n);
 }
 
-static void test_each_read_of_the_defaults_recording_answers_one_number(void **state)
+static void test_each_read_of_the_defaults_recording_answers_one_number(void)
 {
-    (void)state;
     /* every `r` line of vendor-python-defaults (each path of the vendor's
      * table) answers one number, never an error: what the vendor's client
      * parses with float() or int() */
@@ -943,23 +915,23 @@ static void test_each_read_of_the_defaults_recording_answers_one_number(void **s
         reads++;
     }
     /* 159 vendor paths, trajectory_done also read by the default-argument calls */
-    assert_true(reads >= 159);
+    TEST_ASSERT_TRUE(reads >= 159);
 }
 
-static void test_vendor_python_id_discovery_read_answers_the_id(void **state)
+static void test_vendor_python_id_discovery_read_answers_the_id(void)
 {
-    (void)state;
     mock_t *m = mock_new_id(7);
-    assert_string_equal(ASSERT_QUERY(m, "r axis0.config.can_node_id "), "7\n");
+    TEST_ASSERT_EQUAL_STRING("7\n", ASSERT_QUERY(m, "r axis0.config.can_node_id "));
     char want[32];
     mock_reply_line(want, sizeof want, "7", true);
-    assert_string_equal(ASSERT_QUERY(m, "r axis0.config.can_node_id *42"), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "r axis0.config.can_node_id *42"));
 }
 
 int main(void)
 {
     static mock_suite_t s;
-#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    UNITY_BEGIN();
+#define ADD(fn) mock_suite_add_test(&s, fn)
     for (size_t i = 0; i < sizeof examples / sizeof examples[0]; i++)
         mock_suite_add(&s, example_case, (void *)(uintptr_t)&examples[i],
                        "test_worked_example_\"%s\"_on_drive_%u_is_accepted", examples[i].line,
@@ -1003,5 +975,6 @@ int main(void)
     ADD(test_the_three_recordings_run_back_to_back_on_one_bus);
     ADD(test_each_read_of_the_defaults_recording_answers_one_number);
     ADD(test_vendor_python_id_discovery_read_answers_the_id);
-    return mock_suite_run(&s, "commands");
+    mock_suite_run(&s);
+    return UNITY_END();
 }

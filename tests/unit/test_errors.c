@@ -7,6 +7,14 @@
 
 #include "mock_hal.h"
 
+void setUp(void)
+{
+}
+
+void tearDown(void)
+{
+}
+
 /* ---- every phrase, one case each ---- */
 
 typedef struct phrase_case {
@@ -56,9 +64,9 @@ static const phrase_case_t phrase_cases[] = {
     {"motor idle", {NULL}, 0, DARAN_STATE_IDLE, "q 1 10"},
 };
 
-static void phrase_case_run(void **state)
+static void phrase_case_run(const void *row_arg)
 {
-    const phrase_case_t *c = *state;
+    const phrase_case_t *c = row_arg;
     SKIP_LINE_IF_NO_MULTI(c->line);
     if (c->setup[0])
         SKIP_LINE_IF_NO_MULTI(c->setup[0]);
@@ -77,9 +85,8 @@ static void phrase_case_run(void **state)
     ASSERT_REPLY(m, "0 0\n");
 }
 
-static void test_checksum_mismatch_has_no_effect(void **state)
+static void test_checksum_mismatch_has_no_effect(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char want[64];
     mock_reply_line(want, sizeof want, "error: checksum mismatch", true);
@@ -88,14 +95,14 @@ static void test_checksum_mismatch_has_no_effect(void **state)
     ASSERT_NO_EFFECT(m);
 }
 
-static void test_error_phrases_contain_no_digits(void **state)
+static void test_error_phrases_contain_no_digits(void)
 {
-    (void)state;
     for (int r = 1; r < DARAN_RESULT_COUNT; r++) {
         const char *p = daran_result_phrase((daran_result_t)r);
-        assert_non_null(p);
-        for (const char *q = p; *q; q++)
-            assert_false(*q >= '0' && *q <= '9');
+        TEST_ASSERT_NOT_NULL(p);
+        for (const char *q = p; *q; q++) {
+            TEST_ASSERT_FALSE(*q >= '0' && *q <= '9');
+        }
     }
 }
 
@@ -158,9 +165,9 @@ static const order_case_t order_cases[] = {
     {"estop_before_infeasible", "mq 1 0", "estop active", DARAN_FLAG_ESTOP, DARAN_STATE_IDLE, true},
 };
 
-static void order_case_run(void **state)
+static void order_case_run(const void *row_arg)
 {
-    const order_case_t *c = *state;
+    const order_case_t *c = row_arg;
     SKIP_LINE_IF_NO_MULTI(c->line);
     mock_t *m = mock_new();
     if (c->preset) {
@@ -171,15 +178,16 @@ static void order_case_run(void **state)
         m->props[DARAN_PROP_AXIS_ERROR].u32 = c->flags;
     if (c->state)
         m->props[DARAN_PROP_CURRENT_STATE].u32 = c->state;
-    if (c->phrase)
+    if (c->phrase) {
         ASSERT_ERROR(m, c->line, c->phrase);
-    else
+    }
+    else {
         ASSERT_SILENT(m, c->line);
+    }
 }
 
-static void test_checksum_mismatch_before_unknown_command(void **state)
+static void test_checksum_mismatch_before_unknown_command(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char want[64];
     mock_reply_line(want, sizeof want, "error: checksum mismatch", true);
@@ -222,9 +230,9 @@ static void assert_hal_failure_answered(mock_t *m, const char *line, daran_resul
                m->n_calls);
 }
 
-static void hal_fault_case(void **state)
+static void hal_fault_case(const void *row_arg)
 {
-    daran_result_t r = *(const daran_result_t *)*state;
+    daran_result_t r = *(const daran_result_t *)row_arg;
     mock_t *m = mock_new();
 
     mock_fail(m, MOCK_FAIL_MOVE, 1, r, -1);
@@ -245,12 +253,11 @@ static void hal_fault_case(void **state)
     mock_send_line(m, "r vbus_voltage 1");
     ASSERT_REPLY(m, want);
     ASSERT_NO_EFFECT(m);
-    assert_string_equal(ASSERT_QUERY(m, "r vbus_voltage 1"), "24\n");
+    TEST_ASSERT_EQUAL_STRING("24\n", ASSERT_QUERY(m, "r vbus_voltage 1"));
 }
 
-static void test_failed_getter_of_a_query_answers_that_error(void **state)
+static void test_failed_getter_of_a_query_answers_that_error(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_POS_ESTIMATE);
     ASSERT_ERROR(m, "f 1", "motor fault");
@@ -260,12 +267,11 @@ static void test_failed_getter_of_a_query_answers_that_error(void **state)
     ASSERT_ERROR(m, "e 1", "motor fault");
     mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_SERIAL_NUMBER);
     ASSERT_ERROR(m, "i 1", "motor fault");
-    assert_string_equal(ASSERT_QUERY(m, "f 1"), "0 0\n");
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "f 1"));
 }
 
-static void test_failed_state_getter_refuses_motion(void **state)
+static void test_failed_state_getter_refuses_motion(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_AXIS_ERROR);
     ASSERT_ERROR(m, "t 1 10", "motor fault");
@@ -274,18 +280,16 @@ static void test_failed_state_getter_refuses_motion(void **state)
     ASSERT_MOVE(m, "t 1 10");
 }
 
-static void test_failed_node_id_getter_is_answered_as_that_error(void **state)
+static void test_failed_node_id_getter_is_answered_as_that_error(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_CAN_NODE_ID);
     ASSERT_ERROR(m, "t 1 10", "motor fault");
     ASSERT_MOVE(m, "t 1 10");
 }
 
-static void test_relative_target_beyond_float_range_is_refused(void **state)
+static void test_relative_target_beyond_float_range_is_refused(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 3e38f;
@@ -297,21 +301,19 @@ static void test_relative_target_beyond_float_range_is_refused(void **state)
     ASSERT_MOVE(m, "mp 1 1");
 }
 
-static void test_failed_setpoint_getter_refuses_a_relative_start(void **state)
+static void test_failed_setpoint_getter_refuses_a_relative_start(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
     mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_POS_SETPOINT);
     ASSERT_ERROR(m, "mt 1 1", "motor fault");
     const daran_move_t *mv = ASSERT_MOVE(m, "mt 1 1");
-    assert_true(mv->pos_deg == 10.0f);
+    TEST_ASSERT_TRUE(mv->pos_deg == 10.0f);
 }
 
-static void test_refused_start_after_hal_failure_keeps_the_preset(void **state)
+static void test_refused_start_after_hal_failure_keeps_the_preset(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
@@ -319,7 +321,7 @@ static void test_refused_start_after_hal_failure_keeps_the_preset(void **state)
     mock_send_line(m, "mt 1 0");
     ASSERT_REPLY(m, "error: motor fault\n");
     const daran_move_t *mv = ASSERT_MOVE(m, "mt 1 0");
-    assert_true(mv->pos_deg == 10.0f);
+    TEST_ASSERT_TRUE(mv->pos_deg == 10.0f);
 }
 
 /* ---- random lines: invariants that hold for every line ---- */
@@ -418,9 +420,8 @@ static bool well_formed_checksum(const char *line)
     return n >= 1 && n <= 3 && v <= 255 && *d == '\0';
 }
 
-static void test_random_lines_keep_every_invariant(void **state)
+static void test_random_lines_keep_every_invariant(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_enable_forward(m);
     unsigned errors = 0, effects = 0, answers = 0, silent = 0;
@@ -507,16 +508,17 @@ static void test_random_lines_keep_every_invariant(void **state)
         else
             silent++;
     }
-    print_message("random lines: %u errors, %u with an effect, %u answered, %u silent\n", errors,
+    mock_message("random lines: %u errors, %u with an effect, %u answered, %u silent\n", errors,
                   effects, answers, silent);
     /* the generator must reach every outcome, or the invariants prove little */
-    assert_true(errors > 1000 && effects > 500 && answers > 200 && silent > 500);
+    TEST_ASSERT_TRUE(errors > 1000 && effects > 500 && answers > 200 && silent > 500);
 }
 
 int main(void)
 {
     static mock_suite_t s;
-#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    UNITY_BEGIN();
+#define ADD(fn) mock_suite_add_test(&s, fn)
     memset(long_line, ' ', DARAN_LINE_MAX + 10);
     memcpy(long_line, "t 1 10", 6);
     long_line[DARAN_LINE_MAX + 10] = '\0';
@@ -543,5 +545,6 @@ int main(void)
     ADD(test_relative_target_beyond_float_range_is_refused);
     ADD(test_failed_setpoint_getter_refuses_a_relative_start);
     ADD(test_refused_start_after_hal_failure_keeps_the_preset);
-    return mock_suite_run(&s, "errors");
+    mock_suite_run(&s);
+    return UNITY_END();
 }

@@ -7,38 +7,43 @@
 
 #include "mock_hal.h"
 
+void setUp(void)
+{
+}
+
+void tearDown(void)
+{
+}
+
 static void make_padded(char *buf, const char *head, size_t total, const char *tail)
 {
     size_t h = strlen(head), t = strlen(tail);
-    assert_true(h + t <= total);
+    TEST_ASSERT_TRUE(h + t <= total);
     memcpy(buf, head, h);
     memset(buf + h, ' ', total - h - t);
     memcpy(buf + total - t, tail, t);
     buf[total] = '\0';
 }
 
-static void test_lf_ends_a_line(void **state)
+static void test_lf_ends_a_line(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_send_raw(m, "f 1\n");
     ASSERT_REPLY(m, "0 0\n");
 }
 
-static void test_crlf_ends_a_line(void **state)
+static void test_crlf_ends_a_line(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_send_raw(m, "f 1\r\n");
     ASSERT_REPLY(m, "0 0\n");
     mock_send_raw(m, "t 1 10 0 25\r\n");
     ASSERT_REPLY(m, "");
-    assert_int_equal(mock_count(m, MOCK_CALL_MOVE), 1);
+    TEST_ASSERT_EQUAL_INT64(1, mock_count(m, MOCK_CALL_MOVE));
 }
 
-static void test_cr_anywhere_is_whitespace(void **state)
+static void test_cr_anywhere_is_whitespace(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_send_raw(m, "f\r1\n");
     ASSERT_REPLY(m, "0 0\n");
@@ -48,9 +53,8 @@ static void test_cr_anywhere_is_whitespace(void **state)
     ASSERT_MOVE_EQUALS(m, mv, {DARAN_MOVE_FILTERED_POSITION, DARAN_GIVEN_RATE, 10, 0, 0, 25, 0, 0});
 }
 
-static void test_blank_lines_get_no_reply(void **state)
+static void test_blank_lines_get_no_reply(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "");
     ASSERT_SILENT(m, "   ");
@@ -59,22 +63,20 @@ static void test_blank_lines_get_no_reply(void **state)
     ASSERT_SILENT(m, " \r \t\r");
 }
 
-static void test_poll_counts_blank_lines_too(void **state)
+static void test_poll_counts_blank_lines_too(void)
 {
-    (void)state;
     mock_t *m = mock_new();
-    assert_int_equal(daran_rx_write(&m->drive, "\n \nf 1\nf", 8), 8);
-    assert_int_equal(daran_poll(&m->drive), 3);
+    TEST_ASSERT_EQUAL_INT64(8, daran_rx_write(&m->drive, "\n \nf 1\nf", 8));
+    TEST_ASSERT_EQUAL_INT64(3, daran_poll(&m->drive));
     ASSERT_REPLY(m, "0 0\n");
-    assert_int_equal(daran_poll(&m->drive), 0);
-    assert_int_equal(daran_rx_write(&m->drive, " 1\n", 3), 3);
-    assert_int_equal(daran_poll(&m->drive), 1);
+    TEST_ASSERT_EQUAL_INT64(0, daran_poll(&m->drive));
+    TEST_ASSERT_EQUAL_INT64(3, daran_rx_write(&m->drive, " 1\n", 3));
+    TEST_ASSERT_EQUAL_INT64(1, daran_poll(&m->drive));
     ASSERT_REPLY(m, "0 0\n");
 }
 
-static void test_line_of_exactly_128_bytes_is_accepted(void **state)
+static void test_line_of_exactly_128_bytes_is_accepted(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char buf[DARAN_LINE_MAX + 1];
     make_padded(buf, "f 1", DARAN_LINE_MAX, "");
@@ -86,22 +88,20 @@ static void test_line_of_exactly_128_bytes_is_accepted(void **state)
     ASSERT_REPLY(m, "0 0\n");
 }
 
-static void test_line_of_128_bytes_with_checksum_is_accepted(void **state)
+static void test_line_of_128_bytes_with_checksum_is_accepted(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char payload[DARAN_LINE_MAX + 1], line[DARAN_LINE_MAX + 16];
     /* payload + "*NNN" (three digits, leading zeros allowed by D4) = 128 bytes */
     make_padded(payload, "t 1 10", DARAN_LINE_MAX - 4, "");
     snprintf(line, sizeof line, "%s*%03u", payload, mock_xor(payload));
-    assert_int_equal(strlen(line), DARAN_LINE_MAX);
+    TEST_ASSERT_EQUAL_INT64(DARAN_LINE_MAX, strlen(line));
     const daran_move_t *mv = ASSERT_MOVE(m, line);
-    assert_true(mv->pos_deg == 10.0f);
+    TEST_ASSERT_TRUE(mv->pos_deg == 10.0f);
 }
 
-static void test_line_of_129_bytes_is_too_long_once_and_the_next_line_works(void **state)
+static void test_line_of_129_bytes_is_too_long_once_and_the_next_line_works(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char buf[DARAN_LINE_MAX + 2];
     make_padded(buf, "t 1 10", DARAN_LINE_MAX + 1, "");
@@ -113,20 +113,18 @@ static void test_line_of_129_bytes_is_too_long_once_and_the_next_line_works(void
     ASSERT_REPLY(m, "0 0\n");
 }
 
-static void test_very_long_line_is_answered_once(void **state)
+static void test_very_long_line_is_answered_once(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char buf[DARAN_LINE_MAX * 4 + 1];
     make_padded(buf, "t 1 10", DARAN_LINE_MAX * 4, "0");
     ASSERT_ERROR(m, buf, "line too long");
-    assert_int_equal(m->n_writes, 1);
+    TEST_ASSERT_EQUAL_INT64(1, m->n_writes);
     ASSERT_MOVE(m, "t 1 10");
 }
 
-static void test_overlong_line_with_invalid_byte_is_too_long(void **state)
+static void test_overlong_line_with_invalid_byte_is_too_long(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char buf[DARAN_LINE_MAX * 2 + 1];
     /* invalid byte early, length found later (D2) */
@@ -139,9 +137,8 @@ static void test_overlong_line_with_invalid_byte_is_too_long(void **state)
     ASSERT_REPLY(m, "0 0\n");
 }
 
-static void test_overlong_line_for_another_drive_is_still_answered(void **state)
+static void test_overlong_line_for_another_drive_is_still_answered(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char buf[DARAN_LINE_MAX + 11];
     make_padded(buf, "t 7 10", DARAN_LINE_MAX + 10, "");
@@ -150,9 +147,9 @@ static void test_overlong_line_for_another_drive_is_still_answered(void **state)
 
 /* ---- every invalid byte class, one case per byte ---- */
 
-static void invalid_byte_case(void **state)
+static void invalid_byte_case(const void *row_arg)
 {
-    uint8_t b = (uint8_t)(uintptr_t)*state;
+    uint8_t b = (uint8_t)(uintptr_t)row_arg;
     mock_t *m = mock_new();
     const char *places[] = {"@f 1", "f@1", "f 1@", "t 1 1@0 0 25", "t 9 10@"};
     for (size_t i = 0; i < sizeof places / sizeof places[0]; i++) {
@@ -171,9 +168,8 @@ static void invalid_byte_case(void **state)
     }
 }
 
-static void test_several_invalid_bytes_answer_once(void **state)
+static void test_several_invalid_bytes_answer_once(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_clear(m);
     static const char bad[] = "t\x01 1\x02 10\x7f\xff\n";
@@ -182,9 +178,8 @@ static void test_several_invalid_bytes_answer_once(void **state)
     ASSERT_NO_EFFECT(m);
 }
 
-static void test_tab_and_printable_ascii_are_allowed(void **state)
+static void test_tab_and_printable_ascii_are_allowed(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     /* every printable byte is accepted by the framer: the line is judged later */
     char line[200];
@@ -269,52 +264,52 @@ static void run_script(run_result_t *r, size_t chunk, unsigned seed)
                 c = DARAN_RX_RING_SIZE / 2;
             if (c > n - pos)
                 c = n - pos;
-            assert_int_equal(daran_rx_write(&m->drive, all + pos, c), c);
+            TEST_ASSERT_EQUAL_INT64(c, daran_rx_write(&m->drive, all + pos, c));
             (void)daran_poll(&m->drive);
             pos += c;
         }
     }
-    assert_true(m->out_len < sizeof r->out);
+    TEST_ASSERT_TRUE(m->out_len < sizeof r->out);
     memcpy(r->out, m->out, m->out_len + 1);
-    assert_true(m->n_calls <= 64);
+    TEST_ASSERT_TRUE(m->n_calls <= 64);
     memcpy(r->calls, m->calls, m->n_calls * sizeof m->calls[0]);
     r->n_calls = m->n_calls;
 }
 
 static void assert_same_run(const run_result_t *a, const run_result_t *b)
 {
-    assert_string_equal(a->out, b->out);
-    assert_int_equal(a->n_calls, b->n_calls);
+    TEST_ASSERT_EQUAL_STRING(b->out, a->out);
+    TEST_ASSERT_EQUAL_INT64(b->n_calls, a->n_calls);
     for (size_t i = 0; i < a->n_calls; i++) {
         const mock_call_t *x = &a->calls[i], *y = &b->calls[i];
-        assert_int_equal(x->kind, y->kind);
+        TEST_ASSERT_EQUAL_INT64(y->kind, x->kind);
         if (x->kind == MOCK_CALL_SET) {
-            assert_int_equal(x->prop, y->prop);
-            assert_memory_equal(&x->value, &y->value, sizeof x->value);
+            TEST_ASSERT_EQUAL_INT64(y->prop, x->prop);
+            TEST_ASSERT_EQUAL_MEMORY(&y->value, &x->value, sizeof x->value);
         } else if (x->kind == MOCK_CALL_ACTION) {
-            assert_int_equal(x->action, y->action);
+            TEST_ASSERT_EQUAL_INT64(y->action, x->action);
         } else {
-            assert_int_equal(x->move.kind, y->move.kind);
-            assert_int_equal(x->move.given, y->move.given);
-            assert_true(x->move.pos_deg == y->move.pos_deg);
-            assert_true(x->move.vel_rpm == y->move.vel_rpm);
-            assert_true(x->move.torque_nm == y->move.torque_nm);
-            assert_true(x->move.rate == y->move.rate);
-            assert_true(x->move.kp == y->move.kp);
-            assert_true(x->move.kd == y->move.kd);
+            TEST_ASSERT_EQUAL_INT64(y->move.kind, x->move.kind);
+            TEST_ASSERT_EQUAL_INT64(y->move.given, x->move.given);
+            TEST_ASSERT_TRUE(x->move.pos_deg == y->move.pos_deg);
+            TEST_ASSERT_TRUE(x->move.vel_rpm == y->move.vel_rpm);
+            TEST_ASSERT_TRUE(x->move.torque_nm == y->move.torque_nm);
+            TEST_ASSERT_TRUE(x->move.rate == y->move.rate);
+            TEST_ASSERT_TRUE(x->move.kp == y->move.kp);
+            TEST_ASSERT_TRUE(x->move.kd == y->move.kd);
         }
     }
 }
 
-static void chunk_case(void **state)
+static void chunk_case(const void *row_arg)
 {
-    size_t chunk = (size_t)(uintptr_t)*state;
+    size_t chunk = (size_t)(uintptr_t)row_arg;
     run_script(&whole_run, 0, 0);
     /* sanity: the reference run did what the script says */
-    assert_non_null(strstr(whole_run.out, "error: unknown command\n"));
-    assert_non_null(strstr(whole_run.out, "error: invalid character\n"));
-    assert_non_null(strstr(whole_run.out, "error: line too long\n"));
-    assert_true(whole_run.n_calls >= 10);
+    TEST_ASSERT_NOT_NULL(strstr(whole_run.out, "error: unknown command\n"));
+    TEST_ASSERT_NOT_NULL(strstr(whole_run.out, "error: invalid character\n"));
+    TEST_ASSERT_NOT_NULL(strstr(whole_run.out, "error: line too long\n"));
+    TEST_ASSERT_TRUE(whole_run.n_calls >= 10);
     if (chunk == (size_t)-1) {
         for (unsigned seed = 1; seed <= 20; seed++) {
             run_script(&chunk_run, chunk, seed);
@@ -337,9 +332,8 @@ static size_t raw_write_poll(mock_t *m, const char *text)
     return n;
 }
 
-static void test_ring_overrun_discards_the_damaged_line_as_too_long(void **state)
+static void test_ring_overrun_discards_the_damaged_line_as_too_long(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_clear(m);
     /* 5-byte lines, never polled: the ring overflows inside a line */
@@ -347,9 +341,9 @@ static void test_ring_overrun_discards_the_damaged_line_as_too_long(void **state
     for (size_t i = 0; i < sizeof flood / 5; i++)
         memcpy(flood + 5 * i, "f 1 \n", 5);
     size_t queued = daran_rx_write(&m->drive, flood, sizeof flood);
-    assert_true(queued < sizeof flood);
-    assert_true(queued >= DARAN_RX_RING_SIZE - 1 && queued <= DARAN_RX_RING_SIZE);
-    assert_int_equal(daran_rx_dropped(&m->drive), sizeof flood - queued);
+    TEST_ASSERT_TRUE(queued < sizeof flood);
+    TEST_ASSERT_TRUE(queued >= DARAN_RX_RING_SIZE - 1 && queued <= DARAN_RX_RING_SIZE);
+    TEST_ASSERT_EQUAL_INT64(sizeof flood - queued, daran_rx_dropped(&m->drive));
     (void)daran_poll(&m->drive);
     /* every whole line that fitted executes once */
     static char want[DARAN_RX_RING_SIZE + 16];
@@ -364,15 +358,14 @@ static void test_ring_overrun_discards_the_damaged_line_as_too_long(void **state
     ASSERT_NO_EFFECT(m);
     /* later lines execute exactly once */
     size_t q3 = raw_write_poll(m, "t 1 10\nf 1\n");
-    assert_int_equal(q3, 11);
+    TEST_ASSERT_EQUAL_INT64(11, q3);
     ASSERT_REPLY(m, "0 0\n");
-    assert_int_equal(mock_count(m, MOCK_CALL_MOVE), 1);
-    assert_int_equal(daran_rx_dropped(&m->drive), sizeof flood - queued + 7 - q2);
+    TEST_ASSERT_EQUAL_INT64(1, mock_count(m, MOCK_CALL_MOVE));
+    TEST_ASSERT_EQUAL_INT64(sizeof flood - queued + 7 - q2, daran_rx_dropped(&m->drive));
 }
 
-static void test_ring_overrun_never_executes_a_spliced_motion_line(void **state)
+static void test_ring_overrun_never_executes_a_spliced_motion_line(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_clear(m);
     /* whole lines, then a motion line whose digits are lost to the overrun */
@@ -382,12 +375,12 @@ static void test_ring_overrun_never_executes_a_spliced_motion_line(void **state)
         memcpy(fill + 4 * i, "u 1\n", 4);
     memcpy(fill + WHOLE * 4, "t 1 9999", 8);
     size_t queued = daran_rx_write(&m->drive, fill, sizeof fill);
-    assert_true(queued < sizeof fill);
-    assert_false(daran_rx_byte(&m->drive, '9'));
-    assert_int_equal(daran_rx_dropped(&m->drive), sizeof fill - queued + 1);
+    TEST_ASSERT_TRUE(queued < sizeof fill);
+    TEST_ASSERT_FALSE(daran_rx_byte(&m->drive, '9'));
+    TEST_ASSERT_EQUAL_INT64(sizeof fill - queued + 1, daran_rx_dropped(&m->drive));
     (void)daran_poll(&m->drive);
     ASSERT_REPLY(m, "");
-    assert_int_equal(mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG), WHOLE);
+    TEST_ASSERT_EQUAL_INT64(WHOLE, mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG));
     mock_clear(m);
     /* what is left ("t 1 " or "t 1") + "0" would read as a valid line */
     (void)raw_write_poll(m, "0\n");
@@ -396,15 +389,14 @@ static void test_ring_overrun_never_executes_a_spliced_motion_line(void **state)
     ASSERT_MOVE(m, "t 1 20");
 }
 
-static void test_rx_byte_accepts_until_the_ring_is_full(void **state)
+static void test_rx_byte_accepts_until_the_ring_is_full(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     size_t ok = 0;
     for (int i = 0; i < DARAN_RX_RING_SIZE + 8; i++)
         ok += daran_rx_byte(&m->drive, ' ');
-    assert_true(ok >= DARAN_RX_RING_SIZE - 1 && ok <= DARAN_RX_RING_SIZE);
-    assert_int_equal(daran_rx_dropped(&m->drive), DARAN_RX_RING_SIZE + 8 - ok);
+    TEST_ASSERT_TRUE(ok >= DARAN_RX_RING_SIZE - 1 && ok <= DARAN_RX_RING_SIZE);
+    TEST_ASSERT_EQUAL_INT64(DARAN_RX_RING_SIZE + 8 - ok, daran_rx_dropped(&m->drive));
     (void)daran_poll(&m->drive);
     mock_clear(m);
     mock_send_raw(m, "\n");
@@ -413,58 +405,55 @@ static void test_rx_byte_accepts_until_the_ring_is_full(void **state)
     ASSERT_REPLY(m, "0 0\n");
 }
 
-static void test_rx_dropped_starts_at_zero(void **state)
+static void test_rx_dropped_starts_at_zero(void)
 {
-    (void)state;
     mock_t *m = mock_new();
-    assert_int_equal(daran_rx_dropped(&m->drive), 0);
+    TEST_ASSERT_EQUAL_INT64(0, daran_rx_dropped(&m->drive));
     mock_send_raw(m, "f 1\n");
-    assert_int_equal(daran_rx_dropped(&m->drive), 0);
+    TEST_ASSERT_EQUAL_INT64(0, daran_rx_dropped(&m->drive));
 }
 
 /* ---- daran_process_line ---- */
 
-static void test_process_line_runs_a_framed_line(void **state)
+static void test_process_line_runs_a_framed_line(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_clear(m);
-    assert_int_equal(daran_process_line(&m->drive, "f 1", 3), DARAN_OK);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 1", 3));
     ASSERT_REPLY(m, "0 0\n");
-    assert_int_equal(daran_process_line(&m->drive, "f 1\r", 4), DARAN_OK);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 1\r", 4));
     ASSERT_REPLY(m, "0 0\n");
-    assert_int_equal(daran_process_line(&m->drive, "t 1 10", 6), DARAN_OK);
-    assert_int_equal(mock_count(m, MOCK_CALL_MOVE), 1);
-    assert_int_equal(daran_process_line(&m->drive, "", 0), DARAN_OK);
-    assert_int_equal(daran_process_line(&m->drive, "f 2", 3), DARAN_OK);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "t 1 10", 6));
+    TEST_ASSERT_EQUAL_INT64(1, mock_count(m, MOCK_CALL_MOVE));
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "", 0));
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 2", 3));
     ASSERT_REPLY(m, "");
     /* a checksum field works the same on this path */
     char want[32];
-    assert_int_equal(daran_process_line(&m->drive, "f 1 *87", 7), DARAN_OK);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 1 *87", 7));
     ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "0 0", true));
-    assert_int_equal(daran_process_line(&m->drive, "f 1 *86", 7), DARAN_ERR_CHECKSUM_MISMATCH);
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_CHECKSUM_MISMATCH, daran_process_line(&m->drive, "f 1 *86", 7));
     ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "error: checksum mismatch", true));
     /* the same 128-byte limit as the byte path */
     char buf[DARAN_LINE_MAX + 1];
     make_padded(buf, "f 1", DARAN_LINE_MAX, "");
-    assert_int_equal(daran_process_line(&m->drive, buf, DARAN_LINE_MAX), DARAN_OK);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, buf, DARAN_LINE_MAX));
     ASSERT_REPLY(m, "0 0\n");
 }
 
-static void test_process_line_returns_the_error_it_answered(void **state)
+static void test_process_line_returns_the_error_it_answered(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_clear(m);
-    assert_int_equal(daran_process_line(&m->drive, "x 1", 3), DARAN_ERR_UNKNOWN_COMMAND);
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_UNKNOWN_COMMAND, daran_process_line(&m->drive, "x 1", 3));
     ASSERT_REPLY(m, "error: unknown command\n");
-    assert_int_equal(daran_process_line(&m->drive, "f\0001", 3), DARAN_ERR_INVALID_CHARACTER);
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_INVALID_CHARACTER, daran_process_line(&m->drive, "f\0001", 3));
     ASSERT_REPLY(m, "error: invalid character\n");
     char buf[DARAN_LINE_MAX + 2];
     make_padded(buf, "f 1", DARAN_LINE_MAX + 1, "");
-    assert_int_equal(daran_process_line(&m->drive, buf, DARAN_LINE_MAX + 1), DARAN_ERR_LINE_TOO_LONG);
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_LINE_TOO_LONG, daran_process_line(&m->drive, buf, DARAN_LINE_MAX + 1));
     ASSERT_REPLY(m, "error: line too long\n");
-    assert_int_equal(daran_process_line(&m->drive, "t 1 10 0 -1", 11), DARAN_ERR_OUT_OF_RANGE);
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_OUT_OF_RANGE, daran_process_line(&m->drive, "t 1 10 0 -1", 11));
     ASSERT_REPLY(m, "error: value out of range\n");
     ASSERT_NO_EFFECT(m);
 }
@@ -472,7 +461,8 @@ static void test_process_line_returns_the_error_it_answered(void **state)
 int main(void)
 {
     static mock_suite_t s;
-#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    UNITY_BEGIN();
+#define ADD(fn) mock_suite_add_test(&s, fn)
     ADD(test_lf_ends_a_line);
     ADD(test_crlf_ends_a_line);
     ADD(test_cr_anywhere_is_whitespace);
@@ -510,5 +500,6 @@ int main(void)
     ADD(test_rx_dropped_starts_at_zero);
     ADD(test_process_line_runs_a_framed_line);
     ADD(test_process_line_returns_the_error_it_answered);
-    return mock_suite_run(&s, "framing");
+    mock_suite_run(&s);
+    return UNITY_END();
 }

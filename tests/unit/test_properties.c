@@ -11,6 +11,14 @@
 
 #include "mock_hal.h"
 
+void setUp(void)
+{
+}
+
+void tearDown(void)
+{
+}
+
 enum { SCOPE_SYSTEM, SCOPE_AXIS };
 enum { ACCESS_RO, ACCESS_RW };
 
@@ -49,24 +57,24 @@ static void line_for(char *buf, size_t size, const prop_row_t *p, const char *wo
                  id >= 0 ? " " : "", idtext);
 }
 
-static void test_the_property_list_has_every_spec_property(void **state)
+static void test_the_property_list_has_every_spec_property(void)
 {
-    (void)state;
-    assert_int_equal(N_ROWS, DARAN_PROP_COUNT);
+    TEST_ASSERT_EQUAL_INT64(DARAN_PROP_COUNT, N_ROWS);
     /* spec 10.2: the vendor's 159 paths, serial_number, config.enable_watchdog,
      * config.watchdog_timeout and config_warnings (D32) */
-    assert_int_equal(N_ROWS, 163);
-    for (size_t i = 0; i < N_ROWS; i++)
-        assert_int_equal(rows[i].id, (daran_prop_t)i);
+    TEST_ASSERT_EQUAL_INT64(163, N_ROWS);
+    for (size_t i = 0; i < N_ROWS; i++) {
+        TEST_ASSERT_EQUAL_INT64((daran_prop_t)i, rows[i].id);
+    }
 }
 
-static void test_every_path_is_unique_within_its_scope(void **state)
+static void test_every_path_is_unique_within_its_scope(void)
 {
-    (void)state;
     for (size_t i = 0; i < N_ROWS; i++)
         for (size_t j = i + 1; j < N_ROWS; j++)
-            if (rows[i].scope == rows[j].scope && strcmp(rows[i].path, rows[j].path) == 0)
-                fail_msg("\"%s\" twice", rows[i].path);
+            if (rows[i].scope == rows[j].scope && strcmp(rows[i].path, rows[j].path) == 0) {
+                TEST_FAIL_MESSAGE_F("\"%s\" twice", rows[i].path);
+            }
 }
 
 /* Is @p path a row of @p scope? */
@@ -96,28 +104,28 @@ static const char *store_sample(mock_t *m, const prop_row_t *p)
     return "";
 }
 
-static void read_case(void **state)
+static void read_case(const void *row_arg)
 {
-    const prop_row_t *p = *state;
+    const prop_row_t *p = row_arg;
     mock_t *m = mock_new();
     const char *text = store_sample(m, p);
     char line[160], want[64];
     mock_reply_line(want, sizeof want, text, false);
     /* own id and the common id 0 */
     line_for(line, sizeof line, p, "r", NULL, 1);
-    assert_string_equal(ASSERT_QUERY(m, line), want);
-    assert_true(m->n_gets >= 1);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
+    TEST_ASSERT_TRUE(m->n_gets >= 1);
     line_for(line, sizeof line, p, "r", NULL, 0);
-    assert_string_equal(ASSERT_QUERY(m, line), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
     if (p->scope == SCOPE_SYSTEM) {
         line_for(line, sizeof line, p, "r", NULL, -1); /* omitted id = 0 */
-        assert_string_equal(ASSERT_QUERY(m, line), want);
+        TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
     }
     /* with a checksum */
     char cline[180];
     line_for(line, sizeof line, p, "r", NULL, 1);
     mock_reply_line(want, sizeof want, text, true);
-    assert_string_equal(ASSERT_QUERY(m, mock_with_checksum(cline, sizeof cline, line)), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, mock_with_checksum(cline, sizeof cline, line)));
     /* another drive's id: silent */
     line_for(line, sizeof line, p, "r", NULL, 2);
     ASSERT_SILENT(m, line);
@@ -140,35 +148,33 @@ static void read_case(void **state)
         text = max_id;
     mock_reply_line(want, sizeof want, text, false);
     line_for(line, sizeof line, p, "r", NULL, DARAN_MOTOR_ID_MAX);
-    assert_string_equal(ASSERT_QUERY(m, line), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
     line_for(line, sizeof line, p, "r", NULL, 0);
-    assert_string_equal(ASSERT_QUERY(m, line), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
     line_for(line, sizeof line, p, "r", NULL, 1);
     ASSERT_SILENT(m, line);
 }
 
-static void test_bools_read_as_0_and_1(void **state)
+static void test_bools_read_as_0_and_1(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_TRAJECTORY_DONE].u32 = 0;
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.trajectory_done"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.controller.trajectory_done"));
     m->props[DARAN_PROP_TRAJECTORY_DONE].u32 = 1;
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.controller.trajectory_done"), "1\n");
+    TEST_ASSERT_EQUAL_STRING("1\n", ASSERT_QUERY(m, "r axis1.controller.trajectory_done"));
 }
 
-static void test_integers_read_in_decimal(void **state)
+static void test_integers_read_in_decimal(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_SERIAL_NUMBER].u64 = 0;
-    assert_string_equal(ASSERT_QUERY(m, "r serial_number 1"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r serial_number 1"));
     m->props[DARAN_PROP_SERIAL_NUMBER].u64 = 4294967296ull;
-    assert_string_equal(ASSERT_QUERY(m, "r serial_number"), "4294967296\n");
+    TEST_ASSERT_EQUAL_STRING("4294967296\n", ASSERT_QUERY(m, "r serial_number"));
     m->props[DARAN_PROP_FW_VERSION].u32 = UINT32_MAX;
-    assert_string_equal(ASSERT_QUERY(m, "r fw_version 0"), "4294967295\n");
+    TEST_ASSERT_EQUAL_STRING("4294967295\n", ASSERT_QUERY(m, "r fw_version 0"));
     m->props[DARAN_PROP_AXIS_ERROR].u32 = 0;
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.error"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.error"));
 }
 
 /* ---- float format (spec section 4) ---- */
@@ -190,26 +196,25 @@ static fmt_case_t fmt_cases[] = {
     {12345.678f, "12345.678"}, {-0.00001f, "-0.00001"},
 };
 
-static void fmt_case_run(void **state)
+static void fmt_case_run(const void *row_arg)
 {
-    const fmt_case_t *c = *state;
+    const fmt_case_t *c = row_arg;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_INPUT_POS].f32 = c->value;
     char want[64];
     mock_reply_line(want, sizeof want, c->text, false);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"));
 }
 
-static void test_non_finite_floats_read_as_nan_inf(void **state)
+static void test_non_finite_floats_read_as_nan_inf(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_INPUT_POS].f32 = NAN;
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"), "nan\n");
+    TEST_ASSERT_EQUAL_STRING("nan\n", ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"));
     m->props[DARAN_PROP_INPUT_POS].f32 = INFINITY;
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"), "inf\n");
+    TEST_ASSERT_EQUAL_STRING("inf\n", ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"));
     m->props[DARAN_PROP_INPUT_POS].f32 = -INFINITY;
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"), "-inf\n");
+    TEST_ASSERT_EQUAL_STRING("-inf\n", ASSERT_QUERY(m, "r axis1.output_shaft.input_pos"));
 }
 
 /* Random float32 bit patterns read back through `r`: the reply must parse
@@ -275,9 +280,8 @@ static void check_format(const mock_t *m, float x, const char *text)
     }
 }
 
-static void test_random_floats_read_back_bit_exact_in_shortest_form(void **state)
+static void test_random_floats_read_back_bit_exact_in_shortest_form(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     uint32_t seed = 987654321u;
     for (int i = 0; i < 6000; i++) {
@@ -327,7 +331,7 @@ static const char *write_sample(const prop_row_t *p)
     case DARAN_RANGE_POLE_PAIRS: return "21";
     case DARAN_RANGE_COUNT: break;
     }
-    fail_msg("%s: no write sample for range %d", p->name, (int)p->range);
+    TEST_FAIL_MESSAGE_F("%s: no write sample for range %d", p->name, (int)p->range);
     return "";
 }
 
@@ -349,9 +353,9 @@ static void check_value(const mock_t *m, const prop_row_t *p, daran_value_t v, c
     }
 }
 
-static void write_case(void **state)
+static void write_case(const void *row_arg)
 {
-    const prop_row_t *p = *state;
+    const prop_row_t *p = row_arg;
     mock_t *m = mock_new();
     char line[160];
     const char *text = write_sample(p);
@@ -369,7 +373,7 @@ static void write_case(void **state)
     line_for(line, sizeof line, p, "r", NULL, 0);
     char want[64];
     mock_reply_line(want, sizeof want, text, false);
-    assert_string_equal(ASSERT_QUERY(m, line), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
     /* another drive's id: silent, nothing written */
     line_for(line, sizeof line, p, "w", text, 2);
     ASSERT_SILENT(m, line);
@@ -391,13 +395,14 @@ static void write_case(void **state)
         ASSERT_ERROR(m, line, "invalid command format");
     }
     line_for(line, sizeof line, p, "w", NULL, 1);
-    if (p->scope == SCOPE_AXIS)
+    if (p->scope == SCOPE_AXIS) {
         ASSERT_ERROR(m, line, "invalid command format");
+    }
 }
 
-static void read_only_case(void **state)
+static void read_only_case(const void *row_arg)
 {
-    const prop_row_t *p = *state;
+    const prop_row_t *p = row_arg;
     mock_t *m = mock_new();
     const char *text = store_sample(m, p);
     char line[160];
@@ -418,7 +423,7 @@ static void read_only_case(void **state)
     /* and the value it held reads back unchanged */
     line_for(line, sizeof line, p, "r", NULL, 1);
     mock_reply_line(want, sizeof want, text, false);
-    assert_string_equal(ASSERT_QUERY(m, line), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
 }
 
 /* ---- range edges ---- */
@@ -506,31 +511,33 @@ static const edge_t *edges_for(const prop_row_t *p)
     case DARAN_RANGE_POLE_PAIRS: return edges_pole_pairs;
     case DARAN_RANGE_COUNT: break;
     }
-    fail_msg("%s: no edges for range %d", p->name, (int)p->range);
+    TEST_FAIL_MESSAGE_F("%s: no edges for range %d", p->name, (int)p->range);
     return edges_none;
 }
 
 /* Float ranges belong to f32 rows, integer ranges to integer rows: a row that
  * mixed them would be checked by rules that cannot hold. */
-static void test_every_row_has_a_range_of_its_type(void **state)
+static void test_every_row_has_a_range_of_its_type(void)
 {
-    (void)state;
     for (size_t i = 0; i < N_ROWS; i++) {
         const prop_row_t *p = &rows[i];
         bool float_range = p->range == DARAN_RANGE_NONE || p->range == DARAN_RANGE_NON_NEGATIVE ||
                            p->range == DARAN_RANGE_POSITIVE || p->range == DARAN_RANGE_NON_POSITIVE;
-        if (p->type == DARAN_TYPE_F32 && !float_range)
-            fail_msg("%s: f32 with an integer range %d", p->name, (int)p->range);
-        if (p->type == DARAN_TYPE_BOOL && p->range != DARAN_RANGE_BOOL)
-            fail_msg("%s: bool without the 0|1 range", p->name);
-        if (p->type == DARAN_TYPE_U64 && p->access != ACCESS_RO)
-            fail_msg("%s: a writable u64 has no range rule", p->name);
+        if (p->type == DARAN_TYPE_F32 && !float_range) {
+            TEST_FAIL_MESSAGE_F("%s: f32 with an integer range %d", p->name, (int)p->range);
+        }
+        if (p->type == DARAN_TYPE_BOOL && p->range != DARAN_RANGE_BOOL) {
+            TEST_FAIL_MESSAGE_F("%s: bool without the 0|1 range", p->name);
+        }
+        if (p->type == DARAN_TYPE_U64 && p->access != ACCESS_RO) {
+            TEST_FAIL_MESSAGE_F("%s: a writable u64 has no range rule", p->name);
+        }
     }
 }
 
-static void range_case(void **state)
+static void range_case(const void *row_arg)
 {
-    const prop_row_t *p = *state;
+    const prop_row_t *p = row_arg;
     mock_t *m = mock_new();
     char line[160];
     for (const edge_t *e = edges_for(p); e->text; e++) {
@@ -545,20 +552,18 @@ static void range_case(void **state)
     }
 }
 
-static void test_non_negative_accepts_negative_zero(void **state)
+static void test_non_negative_accepts_negative_zero(void)
 {
-    (void)state;
     /* -0.0 >= 0 holds in IEEE arithmetic: "-0" is not below zero */
     mock_t *m = mock_new();
     daran_value_t v = ASSERT_SET(m, "w axis1.controller.config.pos_gain -0", DARAN_PROP_POS_GAIN);
-    assert_true(v.f32 == 0.0f);
+    TEST_ASSERT_TRUE(v.f32 == 0.0f);
 }
 
 /* ---- paths ---- */
 
-static void test_unknown_paths_are_invalid_properties(void **state)
+static void test_unknown_paths_are_invalid_properties(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     static const char *const lines[] = {
         "r nope", "r nope 1", "r axis1.nope", "r axis1.", "r axis1.output_shaft",
@@ -567,13 +572,13 @@ static void test_unknown_paths_are_invalid_properties(void **state)
         "r vbus_voltag 1", "r vbus_voltagee 1", "r .vbus_voltage 1", "w axis1.nope 1",
         "w nope 1", "w nope 1 1", "r a 1", "r zzzz 1", "r AAAA 1", "r ~ 1",
     };
-    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++)
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
         ASSERT_ERROR(m, lines[i], "invalid property");
+    }
 }
 
-static void test_a_path_for_another_drive_is_silent_whatever_it_names(void **state)
+static void test_a_path_for_another_drive_is_silent_whatever_it_names(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "r axis2.nope");
     ASSERT_SILENT(m, "w axis2.nope abc");
@@ -581,9 +586,8 @@ static void test_a_path_for_another_drive_is_silent_whatever_it_names(void **sta
     ASSERT_SILENT(m, "r nope 2");
 }
 
-static void test_temperature_and_circular_limits_are_not_cross_checked(void **state)
+static void test_temperature_and_circular_limits_are_not_cross_checked(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     /* D15: a lower limit above the upper one is accepted as written */
     (void)ASSERT_SET(m, "w axis1.fet_thermistor.config.temp_limit_upper 50", DARAN_PROP_FET_TEMP_LIMIT_UPPER);
@@ -593,26 +597,24 @@ static void test_temperature_and_circular_limits_are_not_cross_checked(void **st
     (void)ASSERT_SET(m, "w axis1.output_shaft.circular_setpoint_max -180", DARAN_PROP_CIRCULAR_SETPOINT_MAX);
 }
 
-static void test_setpoint_write_reaches_the_hal_once(void **state)
+static void test_setpoint_write_reaches_the_hal_once(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     daran_value_t v = ASSERT_SET(m, "w axis1.output_shaft.pos_setpoint 150", DARAN_PROP_POS_SETPOINT);
-    assert_true(v.f32 == 150.0f);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.output_shaft.pos_setpoint"), "150\n");
+    TEST_ASSERT_TRUE(v.f32 == 150.0f);
+    TEST_ASSERT_EQUAL_STRING("150\n", ASSERT_QUERY(m, "r axis1.output_shaft.pos_setpoint"));
 }
 
-static void test_node_id_write_changes_the_address(void **state)
+static void test_node_id_write_changes_the_address(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     (void)ASSERT_SET(m, "w axis0.config.can_node_id 5", DARAN_PROP_CAN_NODE_ID);
     ASSERT_SILENT(m, "f 1");
-    assert_string_equal(ASSERT_QUERY(m, "f 5"), "0 0\n");
-    assert_string_equal(ASSERT_QUERY(m, "r axis5.config.can_node_id"), "5\n");
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "f 5"));
+    TEST_ASSERT_EQUAL_STRING("5\n", ASSERT_QUERY(m, "r axis5.config.can_node_id"));
     ASSERT_SILENT(m, "r axis1.config.can_node_id");
     (void)ASSERT_SET(m, "w axis5.config.can_node_id 1", DARAN_PROP_CAN_NODE_ID);
-    assert_string_equal(ASSERT_QUERY(m, "f 1"), "0 0\n");
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "f 1"));
 }
 
 /* ---- paths one step away from a real one ---- */
@@ -641,9 +643,9 @@ static void assert_not_a_path(mock_t *m, int scope, const char *variant)
     }
 }
 
-static void near_path_case(void **state)
+static void near_path_case(const void *row_arg)
 {
-    const prop_row_t *p = *state;
+    const prop_row_t *p = row_arg;
     mock_t *m = mock_new();
     char v[160];
     size_t n = strlen(p->path);
@@ -709,9 +711,8 @@ static bool refused_as_invalid_property(mock_t *m, int scope, const char *varian
            strcmp(m->out, "error: invalid property\n") == 0;
 }
 
-static void test_names_that_hash_onto_a_row_are_compared_in_full(void **state)
+static void test_names_that_hash_onto_a_row_are_compared_in_full(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     /* the separators a dot may be mistaken for: printable, not blank, '.' or '*' */
     char seps[96];
@@ -748,68 +749,66 @@ static void test_names_that_hash_onto_a_row_are_compared_in_full(void **state)
 
 /* ---- s32 (D34) ---- */
 
-static void test_s32_direction_minus_1_is_written_and_read_back_with_its_sign(void **state)
+static void test_s32_direction_minus_1_is_written_and_read_back_with_its_sign(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     daran_value_t v = ASSERT_SET(m, "w axis1.motor.config.direction -1", DARAN_PROP_MOTOR_DIRECTION);
-    assert_int_equal(v.s32, -1);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.motor.config.direction"), "-1\n");
+    TEST_ASSERT_EQUAL_INT64(-1, v.s32);
+    TEST_ASSERT_EQUAL_STRING("-1\n", ASSERT_QUERY(m, "r axis1.motor.config.direction"));
     v = ASSERT_SET(m, "w axis1.motor.config.direction 1", DARAN_PROP_MOTOR_DIRECTION);
-    assert_int_equal(v.s32, 1);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.motor.config.direction"), "1\n");
+    TEST_ASSERT_EQUAL_INT64(1, v.s32);
+    TEST_ASSERT_EQUAL_STRING("1\n", ASSERT_QUERY(m, "r axis1.motor.config.direction"));
 }
 
-static void test_s32_direction_0_and_2_are_out_of_range_with_no_effect(void **state)
+static void test_s32_direction_0_and_2_are_out_of_range_with_no_effect(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_ERROR(m, "w axis1.motor.config.direction 0", "value out of range");
     ASSERT_ERROR(m, "w axis1.motor.config.direction 2", "value out of range");
     ASSERT_ERROR(m, "w axis1.motor.config.direction -0", "value out of range");
     ASSERT_ERROR(m, "w axis1.motor.config.direction -2", "value out of range");
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.motor.config.direction"), "1\n");
+    TEST_ASSERT_EQUAL_STRING("1\n", ASSERT_QUERY(m, "r axis1.motor.config.direction"));
 }
 
-static void test_s32_integral_float_minus_1_point_0_is_accepted_as_minus_1(void **state)
+static void test_s32_integral_float_minus_1_point_0_is_accepted_as_minus_1(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     daran_value_t v = ASSERT_SET(m, "w axis1.motor.config.direction -1.0", DARAN_PROP_MOTOR_DIRECTION);
-    assert_int_equal(v.s32, -1);
+    TEST_ASSERT_EQUAL_INT64(-1, v.s32);
     v = ASSERT_SET(m, "w axis1.motor.config.direction -10e-1", DARAN_PROP_MOTOR_DIRECTION);
-    assert_int_equal(v.s32, -1);
+    TEST_ASSERT_EQUAL_INT64(-1, v.s32);
     v = ASSERT_SET(m, "w axis1.motor.config.direction -1.000000", DARAN_PROP_MOTOR_DIRECTION);
-    assert_int_equal(v.s32, -1);
+    TEST_ASSERT_EQUAL_INT64(-1, v.s32);
     v = ASSERT_SET(m, "w axis1.motor.config.direction +1", DARAN_PROP_MOTOR_DIRECTION);
-    assert_int_equal(v.s32, 1);
+    TEST_ASSERT_EQUAL_INT64(1, v.s32);
     v = ASSERT_SET(m, "w axis1.config.extra_setting.stored_turns_counts -0", DARAN_PROP_STORED_TURNS_COUNTS);
-    assert_int_equal(v.s32, 0);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.config.extra_setting.stored_turns_counts"), "0\n");
+    TEST_ASSERT_EQUAL_INT64(0, v.s32);
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.config.extra_setting.stored_turns_counts"));
 }
 
-static void test_s32_non_integers_and_doubled_signs_are_invalid_values(void **state)
+static void test_s32_non_integers_and_doubled_signs_are_invalid_values(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     static const char *const bad[] = {"-1.5", "--1", "-+1", "+-1", "-", "- 1", "1-", "-x",
                                       "-1e", "-nan", "-inf", "-0x1", "-.5", "0.5"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char line[96];
         snprintf(line, sizeof line, "w axis1.motor.config.direction %s", bad[i]);
-        if (strchr(bad[i], ' ') != NULL)
+        if (strchr(bad[i], ' ') != NULL) {
             ASSERT_ERROR(m, line, "invalid command format");
-        else
+        }
+        else {
             ASSERT_ERROR(m, line, "invalid value");
+        }
         snprintf(line, sizeof line, "w axis1.config.extra_setting.stored_turns_counts %s", bad[i]);
-        if (strchr(bad[i], ' ') == NULL)
+        if (strchr(bad[i], ' ') == NULL) {
             ASSERT_ERROR(m, line, "invalid value");
+        }
     }
 }
 
-static void test_s32_beyond_32_bits_is_out_of_range(void **state)
+static void test_s32_beyond_32_bits_is_out_of_range(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     static const char *const far[] = {"2147483648", "-2147483649", "4294967295", "4294967296",
                                       "-4294967296", "18446744073709551615",
@@ -824,19 +823,16 @@ static void test_s32_beyond_32_bits_is_out_of_range(void **state)
     /* the two ends themselves are values */
     daran_value_t v = ASSERT_SET(m, "w axis1.config.extra_setting.stored_turns_counts -2147483648",
                                  DARAN_PROP_STORED_TURNS_COUNTS);
-    assert_true(v.s32 == INT32_MIN);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.config.extra_setting.stored_turns_counts"),
-                        "-2147483648\n");
+    TEST_ASSERT_TRUE(v.s32 == INT32_MIN);
+    TEST_ASSERT_EQUAL_STRING("-2147483648\n", ASSERT_QUERY(m, "r axis1.config.extra_setting.stored_turns_counts"));
     v = ASSERT_SET(m, "w axis1.config.extra_setting.stored_turns_counts 2147483647",
                    DARAN_PROP_STORED_TURNS_COUNTS);
-    assert_true(v.s32 == INT32_MAX);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.config.extra_setting.stored_turns_counts"),
-                        "2147483647\n");
+    TEST_ASSERT_TRUE(v.s32 == INT32_MAX);
+    TEST_ASSERT_EQUAL_STRING("2147483647\n", ASSERT_QUERY(m, "r axis1.config.extra_setting.stored_turns_counts"));
 }
 
-static void test_s32_reads_are_decimal_with_a_minus_when_negative(void **state)
+static void test_s32_reads_are_decimal_with_a_minus_when_negative(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     static const struct { int32_t value; const char *text; } cases[] = {
         {0, "0"}, {1, "1"}, {-1, "-1"}, {INT32_MAX, "2147483647"}, {INT32_MIN, "-2147483648"},
@@ -846,34 +842,33 @@ static void test_s32_reads_are_decimal_with_a_minus_when_negative(void **state)
         char want[32];
         mock_reply_line(want, sizeof want, cases[i].text, false);
         m->props[DARAN_PROP_ENCODER_POS_ABS].s32 = cases[i].value;
-        assert_string_equal(ASSERT_QUERY(m, "r axis1.encoder.pos_abs"), want);
+        TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "r axis1.encoder.pos_abs"));
         m->props[DARAN_PROP_ENCODER_TURN_ABS].s32 = cases[i].value;
-        assert_string_equal(ASSERT_QUERY(m, "r axis0.encoder.turn_abs"), want);
+        TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "r axis0.encoder.turn_abs"));
         char line[48], cline[64];
         mock_reply_line(want, sizeof want, cases[i].text, true);
         snprintf(line, sizeof line, "r axis1.encoder.pos_abs");
-        assert_string_equal(ASSERT_QUERY(m, mock_with_checksum(cline, sizeof cline, line)), want);
+        TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, mock_with_checksum(cline, sizeof cline, line)));
     }
 }
 
-static void test_a_u32_takes_no_sign(void **state)
+static void test_a_u32_takes_no_sign(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     /* the s32 sign rule is s32's alone: "-1" is below a u32's range (D7) */
     ASSERT_ERROR(m, "w can.config.heartbeat_ms -1 1", "value out of range");
     ASSERT_ERROR(m, "w can.config.heartbeat_ms --1 1", "invalid value");
     daran_value_t v = ASSERT_SET(m, "w can.config.heartbeat_ms -0 1", DARAN_PROP_CAN_HEARTBEAT_MS);
-    assert_int_equal(v.u32, 0);
+    TEST_ASSERT_EQUAL_INT64(0, v.u32);
     v = ASSERT_SET(m, "w can.config.heartbeat_ms 4294967295 1", DARAN_PROP_CAN_HEARTBEAT_MS);
-    assert_int_equal(v.u32, UINT32_MAX);
+    TEST_ASSERT_EQUAL_INT64(UINT32_MAX, v.u32);
 }
 
 /* ---- error registers (D33): writable with 0 only ---- */
 
-static void error_register_case(void **state)
+static void error_register_case(const void *row_arg)
 {
-    const prop_row_t *p = *state;
+    const prop_row_t *p = row_arg;
     mock_t *m = mock_new();
     m->props[p->id].u32 = 0x4000u;
     char line[160], want[32];
@@ -891,18 +886,17 @@ static void error_register_case(void **state)
     ASSERT_ERROR(m, line, "invalid value");
     /* nothing was cleared */
     line_for(line, sizeof line, p, "r", NULL, 1);
-    assert_string_equal(ASSERT_QUERY(m, line), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
     /* 0 reaches the HAL as 0, once, and the register reads 0 */
     line_for(line, sizeof line, p, "w", "0", 1);
     daran_value_t v = ASSERT_SET(m, line, p->id);
-    assert_int_equal(v.u32, 0);
+    TEST_ASSERT_EQUAL_INT64(0, v.u32);
     line_for(line, sizeof line, p, "r", NULL, 1);
-    assert_string_equal(ASSERT_QUERY(m, line), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, line));
 }
 
-static void test_the_error_registers_are_exactly_the_zero_range_rows(void **state)
+static void test_the_error_registers_are_exactly_the_zero_range_rows(void)
 {
-    (void)state;
     static const daran_prop_t registers[] = {
         DARAN_PROP_AXIS_ERROR, DARAN_PROP_MOTOR_ERROR, DARAN_PROP_ENCODER_ERROR,
         DARAN_PROP_CONTROLLER_ERROR, DARAN_PROP_FET_THERMISTOR_ERROR,
@@ -911,20 +905,19 @@ static void test_the_error_registers_are_exactly_the_zero_range_rows(void **stat
     size_t zero_rows = 0;
     for (size_t i = 0; i < N_ROWS; i++)
         zero_rows += rows[i].range == DARAN_RANGE_ZERO;
-    assert_int_equal(zero_rows, sizeof registers / sizeof registers[0]);
+    TEST_ASSERT_EQUAL_INT64(sizeof registers / sizeof registers[0], zero_rows);
     for (size_t i = 0; i < sizeof registers / sizeof registers[0]; i++) {
         const prop_row_t *p = &rows[registers[i]];
-        assert_int_equal(p->range, DARAN_RANGE_ZERO);
-        assert_int_equal(p->type, DARAN_TYPE_U32);
-        assert_int_equal(p->access, ACCESS_RW);
+        TEST_ASSERT_EQUAL_INT64(DARAN_RANGE_ZERO, p->range);
+        TEST_ASSERT_EQUAL_INT64(DARAN_TYPE_U32, p->type);
+        TEST_ASSERT_EQUAL_INT64(ACCESS_RW, p->access);
     }
 }
 
 /* ---- rates that may be 0 (spec 10.1: "the corresponding properties") ---- */
 
-static void test_rate_properties_accept_0_and_refuse_negatives(void **state)
+static void test_rate_properties_accept_0_and_refuse_negatives(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     static const char *const paths[] = {
         "controller.config.input_filter_bandwidth", "output_shaft.vel_ramp_rate",
@@ -942,7 +935,7 @@ static void test_rate_properties_accept_0_and_refuse_negatives(void **state)
                        m->calls[0].value.f32 == 0.0f,
                    m, __FILE__, __LINE__, "0 must reach the HAL");
         snprintf(line, sizeof line, "r axis1.%s", paths[i]);
-        assert_string_equal(ASSERT_QUERY(m, line), "0\n");
+        TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, line));
         snprintf(line, sizeof line, "w axis1.%s -1e-45", paths[i]);
         ASSERT_ERROR(m, line, "value out of range");
         snprintf(line, sizeof line, "w axis1.%s -1", paths[i]);
@@ -950,21 +943,21 @@ static void test_rate_properties_accept_0_and_refuse_negatives(void **state)
     }
 }
 
-static void test_the_mock_traj_mode_defaults_to_the_trapezoid(void **state)
+static void test_the_mock_traj_mode_defaults_to_the_trapezoid(void)
 {
-    (void)state;
     mock_t *m = mock_new();
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.trap_traj.config.traj_mode"), "1\n");
+    TEST_ASSERT_EQUAL_STRING("1\n", ASSERT_QUERY(m, "r axis1.trap_traj.config.traj_mode"));
     (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.trap_traj.config.traj_mode"), "2\n");
+    TEST_ASSERT_EQUAL_STRING("2\n", ASSERT_QUERY(m, "r axis1.trap_traj.config.traj_mode"));
     m = mock_new();
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.trap_traj.config.traj_mode"), "1\n");
+    TEST_ASSERT_EQUAL_STRING("1\n", ASSERT_QUERY(m, "r axis1.trap_traj.config.traj_mode"));
 }
 
 int main(void)
 {
     static mock_suite_t s;
-#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    UNITY_BEGIN();
+#define ADD(fn) mock_suite_add_test(&s, fn)
     ADD(test_the_property_list_has_every_spec_property);
     ADD(test_every_path_is_unique_within_its_scope);
     ADD(test_every_row_has_a_range_of_its_type);
@@ -1008,5 +1001,6 @@ int main(void)
     ADD(test_the_error_registers_are_exactly_the_zero_range_rows);
     ADD(test_rate_properties_accept_0_and_refuse_negatives);
     ADD(test_the_mock_traj_mode_defaults_to_the_trapezoid);
-    return mock_suite_run(&s, "properties");
+    mock_suite_run(&s);
+    return UNITY_END();
 }

@@ -8,6 +8,14 @@
 
 #include "mock_hal.h"
 
+void setUp(void)
+{
+}
+
+void tearDown(void)
+{
+}
+
 /* Motion lines, each with the preset its start needs ("" for none). */
 typedef struct motion { const char *preset; const char *line; } motion_t;
 
@@ -35,9 +43,9 @@ static void send_preset(mock_t *m, const motion_t *mo)
     }
 }
 
-static void estop_case(void **state)
+static void estop_case(const void *row_arg)
 {
-    const motion_t *mo = *state;
+    const motion_t *mo = row_arg;
     SKIP_LINE_IF_NO_MULTI(mo->line);
     mock_t *m = mock_new();
     send_preset(m, mo);
@@ -53,9 +61,9 @@ static const uint32_t blocking_flags[] = {
     1u << 31, DARAN_FLAG_WATCHDOG | DARAN_FLAG_OVERTEMP, ~(uint32_t)DARAN_FLAG_ESTOP,
 };
 
-static void fault_case(void **state)
+static void fault_case(const void *row_arg)
 {
-    const motion_t *mo = *state;
+    const motion_t *mo = row_arg;
     SKIP_LINE_IF_NO_MULTI(mo->line);
     for (size_t i = 0; i < sizeof blocking_flags / sizeof blocking_flags[0]; i++) {
         mock_t *m = mock_new();
@@ -68,9 +76,9 @@ static void fault_case(void **state)
     }
 }
 
-static void idle_case(void **state)
+static void idle_case(const void *row_arg)
 {
-    const motion_t *mo = *state;
+    const motion_t *mo = row_arg;
     SKIP_LINE_IF_NO_MULTI(mo->line);
     mock_t *m = mock_new();
     send_preset(m, mo);
@@ -81,9 +89,9 @@ static void idle_case(void **state)
     ASSERT_ERROR(m, mo->line, "motor idle");
 }
 
-static void nvm_warning_case(void **state)
+static void nvm_warning_case(const void *row_arg)
 {
-    const motion_t *mo = *state;
+    const motion_t *mo = row_arg;
     SKIP_LINE_IF_NO_MULTI(mo->line);
     mock_t *m = mock_new();
     send_preset(m, mo);
@@ -97,9 +105,9 @@ static void nvm_warning_case(void **state)
 
 /* The other registers say why; only axis0.error decides (the port sets the
  * summary bits 6 and 9 when motor.error / controller.error are set). */
-static void other_registers_case(void **state)
+static void other_registers_case(const void *row_arg)
 {
-    const motion_t *mo = *state;
+    const motion_t *mo = row_arg;
     SKIP_LINE_IF_NO_MULTI(mo->line);
     mock_t *m = mock_new();
     send_preset(m, mo);
@@ -113,17 +121,15 @@ static void other_registers_case(void **state)
     ASSERT_ERROR(m, mo->line, "motor fault");
 }
 
-static void test_estop_wins_over_every_other_flag(void **state)
+static void test_estop_wins_over_every_other_flag(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     set_state(m, 0xFFFFFFFFu, DARAN_STATE_IDLE);
     ASSERT_ERROR(m, "t 1 10", "estop active");
 }
 
-static void test_commands_other_than_motion_work_in_estop(void **state)
+static void test_commands_other_than_motion_work_in_estop(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
@@ -134,33 +140,31 @@ static void test_commands_other_than_motion_work_in_estop(void **state)
     ASSERT_ACTION(m, "sz 1", DARAN_ACTION_SET_ZERO);
     ASSERT_ACTION(m, "u 1", DARAN_ACTION_FEED_WATCHDOG);
     ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
-    assert_string_equal(ASSERT_QUERY(m, "f 1"), "0 0\n");
+    TEST_ASSERT_EQUAL_STRING("0 0\n", ASSERT_QUERY(m, "f 1"));
     mock_send_line(m, "e 1");
     ASSERT_REPLY(m, "axis: 16384\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
                     "motor_thermistor: 0\ncan: 0\n");
     ASSERT_NO_EFFECT(m);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.current_state"), "1\n");
+    TEST_ASSERT_EQUAL_STRING("1\n", ASSERT_QUERY(m, "r axis1.current_state"));
     (void)ASSERT_QUERY(m, "g 1");
     (void)ASSERT_QUERY(m, "i 1");
     ASSERT_ACTION(m, "sc 1", DARAN_ACTION_CLEAR_ERRORS);
 }
 
-static void test_after_estop_clear_keeps_the_drive_idle_until_closed_loop(void **state)
+static void test_after_estop_clear_keeps_the_drive_idle_until_closed_loop(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
     ASSERT_ERROR(m, "t 1 10", "estop active");
     ASSERT_ACTION(m, "sc 1", DARAN_ACTION_CLEAR_ERRORS);
     ASSERT_ERROR(m, "t 1 10", "motor idle");
     daran_value_t v = ASSERT_SET(m, "w axis1.requested_state 8", DARAN_PROP_REQUESTED_STATE);
-    assert_int_equal(v.u32, DARAN_STATE_CLOSED_LOOP);
+    TEST_ASSERT_EQUAL_INT64(DARAN_STATE_CLOSED_LOOP, v.u32);
     ASSERT_MOVE(m, "t 1 10");
 }
 
-static void test_closed_loop_request_is_refused_while_a_flag_is_set(void **state)
+static void test_closed_loop_request_is_refused_while_a_flag_is_set(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
     ASSERT_ERROR(m, "w axis1.requested_state 8", "estop active");
@@ -177,36 +181,33 @@ static void test_closed_loop_request_is_refused_while_a_flag_is_set(void **state
     (void)ASSERT_SET(m, "w axis1.requested_state 8", DARAN_PROP_REQUESTED_STATE);
 }
 
-static void test_axis_error_cleared_by_a_write_of_0_leaves_the_drive_idle(void **state)
+static void test_axis_error_cleared_by_a_write_of_0_leaves_the_drive_idle(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_ACTION(m, "st 1", DARAN_ACTION_ESTOP);
     ASSERT_ERROR(m, "w axis1.error 1", "value out of range");
     ASSERT_ERROR(m, "t 1 10", "estop active");
     daran_value_t v = ASSERT_SET(m, "w axis1.error 0", DARAN_PROP_AXIS_ERROR);
-    assert_int_equal(v.u32, 0);
+    TEST_ASSERT_EQUAL_INT64(0, v.u32);
     /* D33: clearing does not close the loop */
     ASSERT_ERROR(m, "t 1 10", "motor idle");
     (void)ASSERT_SET(m, "w axis1.requested_state 8", DARAN_PROP_REQUESTED_STATE);
     ASSERT_MOVE(m, "t 1 10");
 }
 
-static void test_sc_clears_the_warnings_in_the_mock_and_the_drive_keeps_running(void **state)
+static void test_sc_clears_the_warnings_in_the_mock_and_the_drive_keeps_running(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_CONFIG_WARNINGS].u32 = DARAN_WARNING_NVM_CORRUPT;
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.config_warnings"), "1\n");
+    TEST_ASSERT_EQUAL_STRING("1\n", ASSERT_QUERY(m, "r axis1.config_warnings"));
     ASSERT_MOVE(m, "t 1 10");
     ASSERT_ACTION(m, "sc 1", DARAN_ACTION_CLEAR_ERRORS);
-    assert_string_equal(ASSERT_QUERY(m, "r axis1.config_warnings"), "0\n");
+    TEST_ASSERT_EQUAL_STRING("0\n", ASSERT_QUERY(m, "r axis1.config_warnings"));
     ASSERT_MOVE(m, "t 1 10");
 }
 
-static void test_closed_loop_request_checks_its_value_first(void **state)
+static void test_closed_loop_request_checks_its_value_first(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     set_state(m, DARAN_FLAG_ESTOP, DARAN_STATE_IDLE);
     ASSERT_ERROR(m, "w axis1.requested_state 9", "value out of range");
@@ -215,9 +216,8 @@ static void test_closed_loop_request_checks_its_value_first(void **state)
 
 /* ---- watchdog (D22) ---- */
 
-static void test_accepted_motion_feeds_the_watchdog_after_its_move(void **state)
+static void test_accepted_motion_feeds_the_watchdog_after_its_move(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     for (size_t i = 0; i < N_MOTIONS; i++) {
         if (!DARAN_ENABLE_MULTI_MOTOR && mock_uses_multi(motions[i].line))
@@ -227,20 +227,18 @@ static void test_accepted_motion_feeds_the_watchdog_after_its_move(void **state)
     }
 }
 
-static void test_refused_motion_does_not_feed_the_watchdog(void **state)
+static void test_refused_motion_does_not_feed_the_watchdog(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_ERROR(m, "t 1 10 0 -1", "value out of range");
-    assert_int_equal(mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG), 0);
+    TEST_ASSERT_EQUAL_INT64(0, mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG));
     set_state(m, 0, DARAN_STATE_IDLE);
     ASSERT_ERROR(m, "t 1 10", "motor idle");
-    assert_int_equal(mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG), 0);
+    TEST_ASSERT_EQUAL_INT64(0, mock_count_action(m, DARAN_ACTION_FEED_WATCHDOG));
 }
 
-static void test_u_feeds_the_watchdog_in_any_state(void **state)
+static void test_u_feeds_the_watchdog_in_any_state(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     ASSERT_ACTION(m, "u 1", DARAN_ACTION_FEED_WATCHDOG);
     ASSERT_ACTION(m, "u 0", DARAN_ACTION_FEED_WATCHDOG);
@@ -251,9 +249,8 @@ static void test_u_feeds_the_watchdog_in_any_state(void **state)
 
 /* ---- presets (D16, D18) ---- */
 
-static void test_a_start_consumes_the_preset(void **state)
+static void test_a_start_consumes_the_preset(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
@@ -265,21 +262,19 @@ static void test_a_start_consumes_the_preset(void **state)
     ASSERT_SILENT(m, "mt 0 0");
 }
 
-static void test_one_preset_serves_any_start_kind(void **state)
+static void test_one_preset_serves_any_start_kind(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 1");
     const daran_move_t *mv = ASSERT_MOVE(m, "mc 1");
-    assert_int_equal(mv->kind, DARAN_MOVE_TORQUE);
-    assert_true(mv->torque_nm == 10.0f);
+    TEST_ASSERT_EQUAL_INT64(DARAN_MOVE_TORQUE, mv->kind);
+    TEST_ASSERT_TRUE(mv->torque_nm == 10.0f);
     ASSERT_ERROR(m, "mv 1", "no preset");
 }
 
-static void test_a_start_refused_by_state_keeps_the_preset(void **state)
+static void test_a_start_refused_by_state_keeps_the_preset(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 10 0 5");
@@ -290,35 +285,33 @@ static void test_a_start_refused_by_state_keeps_the_preset(void **state)
     ASSERT_ERROR(m, "mt 1 0", "motor idle");
     (void)ASSERT_SET(m, "w axis1.requested_state 8", DARAN_PROP_REQUESTED_STATE);
     const daran_move_t *mv = ASSERT_MOVE(m, "mt 1 0");
-    assert_true(mv->pos_deg == 10.0f);
-    assert_true(mv->rate == 5.0f);
+    TEST_ASSERT_TRUE(mv->pos_deg == 10.0f);
+    TEST_ASSERT_TRUE(mv->rate == 5.0f);
 }
 
-static void test_a_start_refused_by_its_values_keeps_the_preset(void **state)
+static void test_a_start_refused_by_its_values_keeps_the_preset(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     ASSERT_SILENT(m, "ms 1 100 1 1");
     ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
     ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
     const daran_move_t *mv = ASSERT_MOVE(m, "mt 1 0");
-    assert_true(mv->pos_deg == 100.0f);
+    TEST_ASSERT_TRUE(mv->pos_deg == 100.0f);
     ASSERT_SILENT(m, "ms 1 10 0 -1");
     ASSERT_ERROR(m, "mt 1 0", "value out of range");
     mv = ASSERT_MOVE(m, "mp 1 0");
-    assert_true(mv->pos_deg == 10.0f);
+    TEST_ASSERT_TRUE(mv->pos_deg == 10.0f);
     /* spec 10.1: duration 0 with a distance is infeasible, and keeps the preset too */
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
     ASSERT_SILENT(m, "ms 1 20 0 10");
     ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
     mv = ASSERT_MOVE(m, "mt 1 0");
-    assert_true(mv->pos_deg == 20.0f);
+    TEST_ASSERT_TRUE(mv->pos_deg == 20.0f);
 }
 
-static void test_start_without_preset_answers_by_id(void **state)
+static void test_start_without_preset_answers_by_id(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     static const char *const own[] = {"mt 1 0", "mq 1 1", "mp 1 0", "mv 1", "mc 1"};
@@ -338,9 +331,8 @@ static void test_start_without_preset_answers_by_id(void **state)
     ASSERT_SILENT(m, "mt 0 0");
 }
 
-static void test_preset_is_accepted_in_any_state(void **state)
+static void test_preset_is_accepted_in_any_state(void)
 {
-    (void)state;
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
     set_state(m, DARAN_FLAG_UNDERVOLTAGE, DARAN_STATE_IDLE);
@@ -351,40 +343,37 @@ static void test_preset_is_accepted_in_any_state(void **state)
 
 /* ---- queries ---- */
 
-static void test_f_answers_position_and_velocity(void **state)
+static void test_f_answers_position_and_velocity(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_POS_ESTIMATE].f32 = -45.5f;
     m->props[DARAN_PROP_VEL_ESTIMATE].f32 = 12.25f;
-    assert_string_equal(ASSERT_QUERY(m, "f 1"), "-45.5 12.25\n");
+    TEST_ASSERT_EQUAL_STRING("-45.5 12.25\n", ASSERT_QUERY(m, "f 1"));
     char want[64];
     mock_reply_line(want, sizeof want, "-45.5 12.25", true);
-    assert_string_equal(ASSERT_QUERY(m, "f 1 *87"), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, "f 1 *87"));
 }
 
-static void test_g_answers_bus_voltage_and_current(void **state)
+static void test_g_answers_bus_voltage_and_current(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_VBUS_VOLTAGE].f32 = 23.5f;
     m->props[DARAN_PROP_IQ_MEASURED].f32 = -1.25f;
-    assert_string_equal(ASSERT_QUERY(m, "g 1"), "23.5 -1.25\n");
+    TEST_ASSERT_EQUAL_STRING("23.5 -1.25\n", ASSERT_QUERY(m, "g 1"));
 }
 
-static void test_i_answers_three_decimal_integers(void **state)
+static void test_i_answers_three_decimal_integers(void)
 {
-    (void)state;
     mock_t *m = mock_new();
-    assert_string_equal(ASSERT_QUERY(m, "i 1"), "10203 7 1234567890123\n");
+    TEST_ASSERT_EQUAL_STRING("10203 7 1234567890123\n", ASSERT_QUERY(m, "i 1"));
     m->props[DARAN_PROP_FW_VERSION].u32 = UINT32_MAX;
     m->props[DARAN_PROP_HW_VERSION].u32 = 0;
     m->props[DARAN_PROP_SERIAL_NUMBER].u64 = UINT64_MAX;
-    assert_string_equal(ASSERT_QUERY(m, "i 1"), "4294967295 0 18446744073709551615\n");
+    TEST_ASSERT_EQUAL_STRING("4294967295 0 18446744073709551615\n", ASSERT_QUERY(m, "i 1"));
     char want[80];
     mock_reply_line(want, sizeof want, "4294967295 0 18446744073709551615", true);
     char line[32];
-    assert_string_equal(ASSERT_QUERY(m, mock_with_checksum(line, sizeof line, "i 1")), want);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, mock_with_checksum(line, sizeof line, "i 1")));
 }
 
 /* ---- e: the seven error registers (spec 10.4, D24) ---- */
@@ -433,9 +422,9 @@ static void e_reply(char *buf, size_t size, const uint32_t *values, bool checksu
     }
 }
 
-static void e_case_run(void **state)
+static void e_case_run(const void *row_arg)
 {
-    const e_case_t *c = *state;
+    const e_case_t *c = row_arg;
     mock_t *m = mock_new();
     for (size_t i = 0; i < 7; i++)
         m->props[e_registers[i]].u32 = c->values[i];
@@ -458,9 +447,8 @@ static void e_case_run(void **state)
     ASSERT_NO_EFFECT(m);
 }
 
-static void test_e_lines_are_in_the_vendor_order_with_the_vendor_names(void **state)
+static void test_e_lines_are_in_the_vendor_order_with_the_vendor_names(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     mock_send_line(m, "e 1");
     ASSERT_REPLY(m, "axis: 0\nmotor: 0\nencoder: 0\ncontroller: 0\nfet_thermistor: 0\n"
@@ -481,9 +469,8 @@ static void test_e_lines_are_in_the_vendor_order_with_the_vendor_names(void **st
 
 /* A register that cannot be read makes the whole reply one error line:
  * never half a report (D24). */
-static void test_e_with_a_failing_register_read_answers_only_motor_fault(void **state)
+static void test_e_with_a_failing_register_read_answers_only_motor_fault(void)
 {
-    (void)state;
     for (size_t i = 0; i < 7; i++) {
         mock_t *m = mock_new();
         m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_ESTOP;
@@ -510,9 +497,8 @@ static void test_e_with_a_failing_register_read_answers_only_motor_fault(void **
 
 /* A port that left a register out of its table answers invalid property
  * for it: e writes that register as 0 (D24). */
-static void test_e_reads_a_register_the_port_left_out_as_0(void **state)
+static void test_e_reads_a_register_the_port_left_out_as_0(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     m->props[DARAN_PROP_ENCODER_ERROR].u32 = 9;
     m->props[DARAN_PROP_CAN_ERROR].u32 = 3;
@@ -541,7 +527,7 @@ static void check_help(mock_t *m, bool checksum)
     mock_check(m->n_calls == 0, m, __FILE__, __LINE__, "h has no effect");
     for (size_t i = 0; i < n; i++) {
         char *end = strchr(p, '\n');
-        assert_non_null(end);
+        TEST_ASSERT_NOT_NULL(end);
         *end = '\0';
         size_t wl = strlen(words[i]);
         mock_check(strncmp(p, words[i], wl) == 0 && (p[wl] == ' ' || p[wl] == '\0'), m,
@@ -550,7 +536,7 @@ static void check_help(mock_t *m, bool checksum)
         mock_check(strncmp(p, "error", 5) != 0, m, __FILE__, __LINE__, "help, not an error");
         if (checksum) {
             char *star = strrchr(p, '*');
-            assert_non_null(star);
+            TEST_ASSERT_NOT_NULL(star);
             unsigned sum = (unsigned)strtoul(star + 1, NULL, 10);
             *star = '\0';
             mock_check(star > p && star[-1] == ' ' && mock_xor(p) == sum, m, __FILE__, __LINE__,
@@ -558,12 +544,11 @@ static void check_help(mock_t *m, bool checksum)
         }
         p = end + 1;
     }
-    assert_int_equal(*p, '\0');
+    TEST_ASSERT_EQUAL_INT64('\0', *p);
 }
 
-static void test_h_answers_one_line_per_command_in_table_order(void **state)
+static void test_h_answers_one_line_per_command_in_table_order(void)
 {
-    (void)state;
     mock_t *m = mock_new();
 #if !DARAN_ENABLE_HELP
     ASSERT_ERROR(m, "h 1", "unknown command");
@@ -575,9 +560,8 @@ static void test_h_answers_one_line_per_command_in_table_order(void **state)
     check_help(m, false);
 }
 
-static void test_h_lines_each_carry_a_checksum_when_requested(void **state)
+static void test_h_lines_each_carry_a_checksum_when_requested(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     char line[32];
     mock_send_line(m, mock_with_checksum(line, sizeof line, "h 1"));
@@ -589,23 +573,24 @@ static void test_h_lines_each_carry_a_checksum_when_requested(void **state)
     check_help(m, true);
 }
 
-static void test_queries_for_another_drive_are_silent(void **state)
+static void test_queries_for_another_drive_are_silent(void)
 {
-    (void)state;
     mock_t *m = mock_new();
     static const char *const lines[] = {"f 2", "g 2", "i 2", "e 2", "f 63",
 #if DARAN_ENABLE_HELP
                                         "h 2",
 #endif
     };
-    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++)
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
         ASSERT_SILENT(m, lines[i]);
+    }
 }
 
 int main(void)
 {
     static mock_suite_t s;
-#define ADD(fn) mock_suite_add(&s, fn, NULL, #fn)
+    UNITY_BEGIN();
+#define ADD(fn) mock_suite_add_test(&s, fn)
     for (size_t i = 0; i < N_MOTIONS; i++) {
         void *st = (void *)(uintptr_t)&motions[i];
         mock_suite_add(&s, estop_case, st, "test_\"%s\"_in_estop_answers_estop_active",
@@ -647,5 +632,6 @@ int main(void)
     ADD(test_h_answers_one_line_per_command_in_table_order);
     ADD(test_h_lines_each_carry_a_checksum_when_requested);
     ADD(test_queries_for_another_drive_are_silent);
-    return mock_suite_run(&s, "states_and_queries");
+    mock_suite_run(&s);
+    return UNITY_END();
 }
