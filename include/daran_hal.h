@@ -36,6 +36,7 @@ extern "C" {
  * hardware detects; docs/porting.md says how to map them. */
 #define DARAN_FLAG_UNDERVOLTAGE       (1u << 1)  /**< axis0.error: DC bus under-voltage */
 #define DARAN_FLAG_MOTOR_FAILED       (1u << 6)  /**< axis0.error: motor.error is not 0 */
+#define DARAN_FLAG_ENCODER_FAILED     (1u << 8)  /**< axis0.error: encoder.error is not 0 */
 #define DARAN_FLAG_CONTROLLER_FAILED  (1u << 9)  /**< axis0.error: controller.error is not 0 */
 #define DARAN_FLAG_WATCHDOG           (1u << 11) /**< axis0.error: watchdog not fed in time */
 #define DARAN_FLAG_ESTOP              (1u << 14) /**< axis0.error: `st` (e-stop requested) */

@@ -504,7 +504,7 @@ static uint32_t blocking_flags(const daran_sim_model_t *m)
         flags |= DARAN_FLAG_OVERTEMP;
     }
     if (m->encoder_error != 0u) {
-        flags |= 1u << 8; /* ODrive's AXIS_ERROR_ENCODER_FAILED */
+        flags |= DARAN_FLAG_ENCODER_FAILED;
     }
     return flags;
 }

@@ -60,8 +60,8 @@ def main():
             checks.append(("ro", path, kind, False))
             lines.append(request_for(path))
             checks.append(("reread", path, kind, False))
-    out = subprocess.run([sim, "--drives", "3"], input="\n".join(lines) + "\n", text=True,
-                         capture_output=True, check=True).stdout
+    out = subprocess.run([sim, "--drives", "3"], input=("\n".join(lines) + "\n").encode("ascii"),
+                         capture_output=True, check=True).stdout.decode("ascii")
     replies = out.split("\n")
     if replies and replies[-1] == "":
         replies.pop()
