@@ -36,18 +36,39 @@ typedef void (*daran_forward_fn)(void *ctx, uint8_t motor_id, const char *line,
                                  size_t len);
 
 /** @cond INTERNAL  The members below are the library's; read none of them. */
+/* The ring's indices are shared between the interrupt (producer) and the
+ * main loop (consumer): C11 atomics with acquire/release ordering where the
+ * compiler has them (the library itself is built as C11), otherwise the
+ * port's barrier (DARAN_PORT_BARRIER, see daran_config.h) or the GCC/clang
+ * __atomic builtins. The object is the same size either way, so a C99 or C++
+ * caller that includes this header sees the same layout. */
+#if !defined(__cplusplus) && !defined(DARAN_PORT_BARRIER) && defined(__STDC_VERSION__) && \
+    __STDC_VERSION__ >= 201112L && !defined(__STDC_NO_ATOMICS__)
+#define DARAN_ATOMIC_C11 1
+typedef _Atomic uint16_t daran_atomic_u16_t;
+typedef _Atomic uint32_t daran_atomic_u32_t;
+#else
+#define DARAN_ATOMIC_C11 0
+typedef uint16_t daran_atomic_u16_t;
+typedef uint32_t daran_atomic_u32_t;
+#endif
+
 typedef struct daran_rx_ring {
-    volatile uint16_t head;                      /* written by the producer only */
-    volatile uint16_t tail;                      /* written by the consumer only */
+    daran_atomic_u16_t head;     /* written by the producer only */
+    daran_atomic_u16_t tail;     /* written by the consumer only */
+    daran_atomic_u32_t dropped;  /* bytes lost; written by the producer only */
+    uint8_t producer_dropping;   /* producer only: discarding up to the next '\n' */
+    /* Received bytes; a line end that closes a line which lost bytes is
+     * stored as DARAN_RX_DAMAGED_END (a received 0x8A is stored as 0x80:
+     * both are invalid characters), so no mark shares a byte between the
+     * two sides. */
     uint8_t bytes[DARAN_RX_RING_SIZE];
-    uint8_t damaged[DARAN_RX_RING_SIZE / 8u];    /* '\n' that ends a line that lost bytes */
-    uint8_t producer_dropping;                   /* producer only */
-    volatile uint32_t dropped;                   /* bytes lost, producer only */
 } daran_rx_ring_t;
-/* The fields of the current line as offsets into it. They live in the
- * instance, not on the stack: the line's road to the HAL is the core's
- * deepest call chain. DARAN_FIELDS_MAX is the most fields a command has
- * (d: word, id and 5 values) plus one to tell "too many". */
+/* The fields of the current line as offsets into it, recorded by the framer
+ * as the bytes arrive. They live in the instance, not on the stack: the
+ * line's road to the HAL is the core's deepest call chain.
+ * DARAN_FIELDS_MAX is the most fields a command has (d: word, id and 5
+ * values) plus one to tell "too many". */
 #define DARAN_FIELDS_MAX 8u
 typedef struct daran_fields {
     const char *base;
@@ -67,16 +88,16 @@ typedef struct daran_drive {
     daran_forward_fn forward;
     void *forward_ctx;
     daran_rx_ring_t rx;
-    uint16_t line_len;
+    uint16_t line_len;       /* bytes of the current line so far (saturates past DARAN_LINE_MAX) */
     uint16_t star_at;        /* index of the line's first '*', DARAN_LINE_MAX when none yet */
     uint16_t reply_len;
-    uint8_t line_flags;
+    uint8_t line_flags;      /* too long, invalid byte, inside a field */
     uint8_t line_xor;        /* XOR of the line's bytes before its first '*' */
     uint8_t reply_checksum;  /* the current request carried a checksum field */
     uint8_t has_preset;
     float preset[3];
     daran_fields_t fields;
-    char line[DARAN_LINE_MAX];
+    char line[DARAN_LINE_MAX + 8]; /* 8: the framer stores whole words */
     char reply[DARAN_REPLY_MAX];
     /** @endcond */
 } daran_drive_t;
@@ -111,8 +132,15 @@ bool daran_rx_byte(daran_drive_t *drive, uint8_t byte);
  * are lost as in daran_rx_byte()). O(len). */
 size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len);
 
-/** Bytes lost to a full ring since daran_init() (wraps at 2^32). O(1). */
+/** Bytes lost to a full ring since daran_init() (wraps at 2^32). O(1);
+ * either side may call it. */
 uint32_t daran_rx_dropped(const daran_drive_t *drive);
+
+/** Room left in the receive ring, in bytes: a byte-input routine (a DMA
+ * or FIFO drain) can take this many without losing one. O(1); either side
+ * may call it (from the consumer side the answer only grows until the
+ * producer runs again). */
+size_t daran_rx_free(const daran_drive_t *drive);
 
 /** Consumer side: frame the queued bytes and process every complete line,
  * replying through the write callback. Returns the number of lines processed

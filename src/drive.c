@@ -1,5 +1,6 @@
-/* A drive instance and the road a framed line takes through the core:
- * checksum -> fields -> command table -> addressing -> handler -> reply. */
+/* A drive instance and the road a framed line takes through the core: the
+ * framer's verdict -> checksum -> command table -> addressing -> handler ->
+ * reply. This file runs the road; no stage calls back into it. */
 #include "internal.h"
 
 daran_result_t daran_init_sized(daran_drive_t *drive, size_t drive_size, const daran_hal_t *hal,
@@ -30,14 +31,15 @@ void daran_set_forward(daran_drive_t *drive, daran_forward_fn forward, void *ctx
 daran_result_t daran_process_line(daran_drive_t *drive, const char *text, size_t len)
 {
     /* The same road as received bytes: through the framer into the line
-     * buffer, so length, characters and checksum are judged in one place. A
-     * '\n' inside the text stops the framer; it is an invalid character here. */
+     * buffer, so length, characters, fields and checksum are judged in one
+     * place. A '\n' inside the text is an invalid character here. */
     daran_framer_reset(drive);
-    size_t taken = daran_framer_append(drive, (const uint8_t *)text, len);
-    if (taken < len) {
+    bool ended = false;
+    size_t taken = daran_framer_feed(drive, (const uint8_t *)text, len, false, &ended);
+    if (ended || taken < len) {
         drive->line_flags |= DARAN_LINE_INVALID_BYTE;
     }
-    return daran_framer_end_line(drive, false);
+    return daran_run_framed_line(drive);
 }
 
 /* An `axisN.` path: N is the motor, the rest is looked up among the axis
@@ -72,8 +74,7 @@ static daran_result_t own_id(daran_drive_t *drive, uint32_t *id)
 /* Steps 3 to 5 of the check order (spec section 8), then the handler. */
 static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
 {
-    daran_fields_t *fields = &drive->fields;
-    daran_split_fields(line->text, line->star_at, fields);
+    const daran_fields_t *fields = &drive->fields;
     uint8_t count = fields->count;
     if (count == 0u) {
         /* Blank lines are ignored; a checksum with no command is not (D5). */
@@ -140,14 +141,28 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     return daran_run_command(drive, &request);
 }
 
-daran_result_t daran_execute_line(daran_drive_t *drive, const daran_line_t *line)
+daran_result_t daran_run_framed_line(daran_drive_t *drive)
 {
-    daran_result_t result = daran_checksum_check(line, &drive->reply_checksum);
-    if (result == DARAN_OK) {
-        result = dispatch(drive, line);
+    uint8_t flags = drive->line_flags;
+    daran_line_t line = {drive->line, drive->line_len, drive->star_at, drive->line_xor};
+    if (line.star_at == DARAN_LINE_MAX) {
+        line.star_at = line.len;
+    }
+    daran_result_t result;
+    drive->reply_checksum = 0;
+    if ((flags & (DARAN_LINE_DAMAGED | DARAN_LINE_TOO_LONG)) != 0u) {
+        result = DARAN_ERR_LINE_TOO_LONG;
+    } else if ((flags & DARAN_LINE_INVALID_BYTE) != 0u) {
+        result = DARAN_ERR_INVALID_CHARACTER;
+    } else {
+        result = daran_checksum_check(&line, &drive->reply_checksum);
+        if (result == DARAN_OK) {
+            result = dispatch(drive, &line);
+        }
     }
     if (result != DARAN_OK) {
         daran_reply_error(drive, result);
     }
+    daran_framer_reset(drive);
     return result;
 }

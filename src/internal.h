@@ -43,6 +43,13 @@ typedef daran_result_t (*daran_handler_fn)(daran_drive_t *drive, const daran_req
 /* daran_drive_t.line_flags */
 #define DARAN_LINE_TOO_LONG 0x01u
 #define DARAN_LINE_INVALID_BYTE 0x02u
+#define DARAN_LINE_DAMAGED 0x04u  /* the ring lost bytes of this line */
+#define DARAN_LINE_IN_FIELD 0x08u /* the last byte framed was inside a field */
+
+/* How the ring stores a line end whose line lost bytes, and what it stores
+ * for a received byte of that value (both are invalid characters). */
+#define DARAN_RX_DAMAGED_END 0x8Au
+#define DARAN_RX_INVALID_BYTE 0x80u
 
 /* Command flags. */
 #define DARAN_CMD_READ 0x01u /* answered for id 0 and never forwarded */
@@ -89,7 +96,7 @@ uint8_t daran_xor(const char *text, size_t len);
  * (*has_checksum 0) otherwise. */
 daran_result_t daran_checksum_check(const daran_line_t *line, uint8_t *has_checksum);
 
-/* fields.c */
+/* Bytes as the framer classifies them */
 /* A blank in a line the framer accepted: space, tab or '\r' are the only
  * accepted bytes at or below ' ', so one comparison tells. */
 static inline bool daran_is_blank(char c)
@@ -101,7 +108,6 @@ static inline bool daran_byte_allowed(uint8_t byte)
 {
     return (uint8_t)(byte - 0x20u) < 0x5Fu || byte == '\t' || byte == '\r';
 }
-void daran_split_fields(const char *text, size_t len, daran_fields_t *out);
 
 /* command_table.c */
 const daran_command_t *daran_find_command(const daran_field_t *word);
@@ -124,17 +130,17 @@ void daran_reply_space(daran_drive_t *drive);
 void daran_reply_end(daran_drive_t *drive);
 void daran_reply_error(daran_drive_t *drive, daran_result_t result);
 
-/* framer.c: bytes -> the instance's line buffer */
+/* framer.c: bytes -> the instance's line buffer and its fields */
 void daran_framer_reset(daran_drive_t *drive);
-/* Append bytes[0..n) to the line up to, not including, the first '\n';
- * returns how many bytes it took (n when there was no '\n'). */
-size_t daran_framer_append(daran_drive_t *drive, const uint8_t *bytes, size_t n);
-/* The line's '\n' arrived: reject or run the line, reset the framer.
- * Returns what daran_process_line() returns. */
-daran_result_t daran_framer_end_line(daran_drive_t *drive, bool damaged);
+/* Frame bytes[0..n) into the current line up to and including the first
+ * line end ('\n'; from the ring also DARAN_RX_DAMAGED_END); returns how many
+ * bytes it took and sets *ended when a line end was among them. */
+size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, bool from_ring,
+                         bool *ended);
 
-/* drive.c: a framed line whose length and characters are known good. */
-daran_result_t daran_execute_line(daran_drive_t *drive, const daran_line_t *line);
+/* drive.c: run the line the framer finished (or reject it), and reset the
+ * framer. Returns what daran_process_line() returns. */
+daran_result_t daran_run_framed_line(daran_drive_t *drive);
 
 /* commands_common.c: what every handler needs */
 daran_result_t daran_field_f32(const daran_field_t *field, float *out);

@@ -103,12 +103,19 @@ static unsigned clz64(uint64_t x)
 /* High 64 bits of a * b; *lo gets the low 64. */
 static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
 {
+#if defined(__SIZEOF_INT128__)
+    __extension__ typedef unsigned __int128 u128;
+    u128 p = (u128)a * b;
+    *lo = (uint64_t)p;
+    return (uint64_t)(p >> 64);
+#else
     uint64_t a0 = a & 0xFFFFFFFFu, a1 = a >> 32;
     uint64_t b0 = b & 0xFFFFFFFFu, b1 = b >> 32;
     uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
     uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
     *lo = (mid << 32) | (p00 & 0xFFFFFFFFu);
     return p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+#endif
 }
 
 /* Leading 64 bits of 10^q (q = -64..45), truncated: the top 64 bits of the
@@ -311,12 +318,14 @@ static DARAN_NOINLINE uint32_t big_decide(const number_scan_t *s, uint32_t lo)
     return lo;
 }
 
-/* |value| = w * 10^q to float32 bits. w holds up to 19 significant digits;
+/* |value| = w * 10^q to float32 bits, when 64 bits of 10^q decide it:
+ * returns 1 with *bits set, or 0 when the exact decision between *bits and
+ * *bits + 1 is needed (big_decide). w holds up to 19 significant digits;
  * truncated: a later digit is non-zero, and then w has all 19 (w >= 10^18). */
-static uint32_t decimal_to_bits(const number_scan_t *s, uint64_t w, int32_t q, int truncated)
+static int decimal_to_bits(uint64_t w, int32_t q, int truncated, uint32_t *bits)
 {
     uint64_t hi, lo;
-    uint32_t bits, d;
+    uint32_t d;
     unsigned lz;
     int32_t e;
     if (DARAN_NUM_FAST_PATH && !truncated && w <= (UINT64_C(1) << 24) && q >= -10 && q <= 10) {
@@ -328,38 +337,80 @@ static uint32_t decimal_to_bits(const number_scan_t *s, uint64_t w, int32_t q, i
             p *= 10.0f;
         }
         f = q < 0 ? f / p : f * p;
-        memcpy(&bits, &f, sizeof bits);
-        return bits;
+        memcpy(bits, &f, sizeof *bits);
+        return 1;
     }
     if (q < DARAN_POW10_MIN) {
-        return 0; /* < 2^64 * 10^-65 < 2^-150 */
+        *bits = 0; /* < 2^64 * 10^-65 < 2^-150 */
+        return 1;
     }
     if (q > 38) {
-        return DARAN_F32_INF; /* >= 10^39 */
+        *bits = DARAN_F32_INF; /* >= 10^39 */
+        return 1;
     }
     lz = clz64(w);
     hi = mul_64x64(w << lz, daran_pow10_hi(q), &lo);
     /* value = (hi + lo / 2^64) * 2^e, within the bounds below */
     e = floor_log2_pow10(q) + 1 - (int32_t)lz;
-    bits = round_bits(hi, lo != 0, e);
+    *bits = round_bits(hi, lo != 0, e);
     if (!truncated && q >= 0 && q <= 27) {
-        return bits; /* 10^q is exact in the table: so is the product */
+        return 1; /* 10^q is exact in the table: so is the product */
     }
     /* Truncated 10^q errs below by < 2^64 product units; truncated digits by
      * < 17 * 2^64 more (w >= 10^18 then, so lz <= 4). */
     d = truncated ? 19u : 2u;
-    if (hi <= UINT64_MAX - d && round_bits(hi + d, 0, e) == bits) {
-        return bits;
+    return hi <= UINT64_MAX - d && round_bits(hi + d, 0, e) == *bits;
+}
+
+/* The shape hosts send nearly always, [+-]?digits[.digits] with at most 19
+ * digits and no exponent, read in one pass straight into w * 10^q. Returns
+ * 0 for anything else, which the general scan then judges. */
+static int scan_plain(const char *t, size_t len, uint64_t *w_out, int32_t *q_out, int *negative)
+{
+    const char *end = t + len;
+    const char *p = t;
+    uint64_t w = 0;
+    *negative = 0;
+    if (p < end && (*p == '-' || *p == '+')) {
+        *negative = *p == '-';
+        p++;
     }
-    return big_decide(s, bits);
+    const char *digits = p;
+    for (; p < end && (uint32_t)(*p - '0') <= 9u; p++) {
+        w = w * 10u + (uint32_t)(*p - '0');
+    }
+    const char *point = p;
+    if (p < end && *p == '.') {
+        for (p++; p < end && (uint32_t)(*p - '0') <= 9u; p++) {
+            w = w * 10u + (uint32_t)(*p - '0');
+        }
+    }
+    size_t count = (size_t)(p - digits) - (point < p ? 1u : 0u);
+    if (p != end || count == 0u || count > 19u) {
+        return 0;
+    }
+    *w_out = w;
+    *q_out = point < p ? -(int32_t)(p - point - 1) : 0;
+    return 1;
 }
 
 daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
 {
     number_scan_t s;
     uint32_t bits = 0;
+    uint64_t w;
+    int32_t q;
+    int negative;
     if ((text == NULL && len != 0) || out == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
+    }
+    if (scan_plain(text, len, &w, &q, &negative) && (w == 0u || decimal_to_bits(w, q, 0, &bits))) {
+        if (bits >= DARAN_F32_INF) {
+            return DARAN_ERR_OUT_OF_RANGE;
+        }
+        bits |= (uint32_t)negative << 31;
+        memcpy(out, &bits, sizeof bits);
+        return DARAN_OK;
     }
     if (!number_scan(text, len, &s)) {
         return DARAN_ERR_INVALID_VALUE;
@@ -369,14 +420,16 @@ daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
          * and then all 19 are kept, so w >= 10^18 (see decimal_to_bits). */
         size_t n = s.end - s.z, i;
         int truncated = n > 19u;
-        uint64_t w = 0;
+        w = 0;
         if (truncated) {
             n = 19u;
         }
         for (i = s.z; i < s.z + n; i++) {
             w = w * 10u + digit_at(&s, i);
         }
-        bits = decimal_to_bits(&s, w, diff_saturated(s.int_len, s.z + n) + s.exp10, truncated);
+        if (!decimal_to_bits(w, diff_saturated(s.int_len, s.z + n) + s.exp10, truncated, &bits)) {
+            bits = big_decide(&s, bits);
+        }
         if (bits >= DARAN_F32_INF) {
             return DARAN_ERR_OUT_OF_RANGE;
         }
@@ -394,6 +447,17 @@ daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out)
     size_t i;
     if ((text == NULL && len != 0) || out == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
+    }
+    if (len > 0u && len <= 19u) {
+        /* plain digits, the usual shape: below 10^19, no overflow possible */
+        for (i = 0; i < len && (uint32_t)(text[i] - '0') <= 9u; i++) {
+            v = v * 10u + (uint32_t)(text[i] - '0');
+        }
+        if (i == len) {
+            *out = v;
+            return DARAN_OK;
+        }
+        v = 0;
     }
     if (!number_scan(text, len, &s)) {
         return DARAN_ERR_INVALID_VALUE;

@@ -3,7 +3,7 @@
  * Both come from DARAN_PROPERTY_LIST through tools/gen_property_index.py,
  * run by the build (property_index.h is in the build folder). A path is
  * found by a perfect hash: one pass over its bytes names the only property
- * it can be, and one comparison of that property's segments decides. The
+ * it can be, and one comparison of that property's words decides. The
  * cost depends on the path's length only, never on how many rows the table
  * has. */
 #include "internal.h"
@@ -17,44 +17,39 @@ daran_property_t daran_property_row(daran_prop_t prop)
     return property_attr[prop];
 }
 
-/* Is text[0..len) exactly segment n (1-based)? */
-static bool segment_is(unsigned n, const char *text, size_t len)
-{
-    size_t start = n > 1u ? segment_end[n - 2u] : 0u;
-    if ((size_t)segment_end[n - 1u] - start != len) {
-        return false;
-    }
-    const char *stored = segment_text + start;
-    for (size_t i = 0; i < len; i++) {
-        if (stored[i] != text[i]) {
-            return false;
-        }
-    }
-    return true;
-}
-
-/* Does name[0..len) spell property @p prop's path? */
+/* Does name[0..len) spell property @p prop's path? Word by word, each
+ * followed by the separator its bit says. */
 static bool path_is(daran_prop_t prop, const char *name, size_t len)
 {
-    const uint8_t *segments = property_segments[prop];
-    size_t start = 0;
-    for (unsigned k = 0; k < 3u && segments[k] != 0u; k++) {
-        if (k > 0u) {
-            if (start >= len || name[start] != '.') {
-                return false;
-            }
-            start++;
-        }
-        size_t end = start;
-        while (end < len && name[end] != '.') {
-            end++;
-        }
-        if (!segment_is(segments[k], name + start, end - start)) {
+    const uint8_t *word = path_words + path_start[prop];
+    const uint8_t *end = path_words + path_start[prop + 1u];
+    unsigned dots = path_dots[prop];
+    size_t at = 0;
+    if (word == end) {
+        return false; /* left out of this build */
+    }
+    for (;;) {
+        unsigned n = *word++;
+        size_t start = n > 1u ? word_end[n - 2u] : 0u;
+        size_t word_len = (size_t)word_end[n - 1u] - start;
+        if (len - at < word_len) {
             return false;
         }
-        start = end;
+        for (size_t i = 0; i < word_len; i++) {
+            if (name[at + i] != word_text[start + i]) {
+                return false;
+            }
+        }
+        at += word_len;
+        if (word == end) {
+            return at == len;
+        }
+        if (at == len || name[at] != ((dots & 1u) != 0u ? '.' : '_')) {
+            return false;
+        }
+        dots >>= 1;
+        at++;
     }
-    return segments[0] != 0u && start == len;
 }
 
 daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t len,

@@ -6,14 +6,16 @@ include/daran_properties.h is the one source of truth, and a build may leave
 rows out (--omit) without editing it.
 
 What it writes, for src/property_table.c:
-  - every dot-separated path segment once ("output_shaft", "pos_setpoint"),
-    plain bytes, with its end offset: a path is at most 3 segment numbers;
-  - per property: its segment numbers and one 16-bit attribute word (type,
-    access, scope, range, unit), so `r`, `w` and discovery read one row;
+  - every word of every path once (the parts between '.' and '_':
+    "output", "shaft", "pos", "setpoint"), plain bytes, with its end offset;
+  - per property: its path as word numbers, one bit per separator ('.' or
+    '_') and one 16-bit attribute word (type, access, scope, range, unit), so
+    `r`, `w` and discovery read one row. Words are shared by many paths:
+    this is about 600 bytes smaller than whole dot-separated segments;
   - a perfect hash of the paths (hash-and-displace): one FNV-1a pass over the
     path's bytes picks a bucket, the bucket's displacement picks the slot,
     the slot names the only property the path can be, and one comparison of
-    its segments decides. O(path length), independent of the row count.
+    its words decides. O(path length), independent of the row count.
 
 Usage: gen_property_index.py --list include/daran_properties.h --out FILE
                              [--omit ID,ID,...] [--stats]
@@ -24,7 +26,7 @@ import sys
 
 FNV_PRIME = 16777619
 MASK32 = 0xFFFFFFFF
-MAX_SEGMENTS = 3
+MAX_WORDS = 8  # separators fit one byte
 ROW_RE = re.compile(r'X\(\s*(\w+)\s*,\s*"([^"]*)"\s*,\s*(SYSTEM|AXIS)\s*,\s*(\w+)\s*,\s*(RO|RW)\s*,\s*(\w+)\s*,\s*"([^"]*)"\s*\)')
 
 
@@ -108,10 +110,16 @@ def generate(rows, omit):
             sys.exit("gen_property_index: path %s appears twice" % rows[i][1])
         seen.add(key)
 
-    segments = sorted({seg for i in kept for seg in rows[i][1].split(".")}, key=lambda s: s.encode())
-    if len(segments) > 255:
-        sys.exit("gen_property_index: more than 255 distinct segments")
-    number = {seg: k + 1 for k, seg in enumerate(segments)}
+    def words_of(path):
+        return re.split(r"[._]", path)
+
+    def separators_of(path):
+        return [c for c in path if c in "._"]
+
+    words = sorted({w for i in kept for w in words_of(rows[i][1])}, key=lambda w: w.encode())
+    if len(words) > 255:
+        sys.exit("gen_property_index: more than 255 distinct words")
+    number = {w: k + 1 for k, w in enumerate(words)}
     units = sorted({r[6] for r in rows} - {""})
     if len(units) > 63:
         sys.exit("gen_property_index: more than 63 distinct units")
@@ -120,9 +128,9 @@ def generate(rows, omit):
 
     keys = []
     for i in kept:
-        parts = rows[i][1].split(".")
-        if len(parts) > MAX_SEGMENTS or "" in parts:
-            sys.exit("gen_property_index: %s: 1..%d non-empty segments" % (rows[i][1], MAX_SEGMENTS))
+        parts = words_of(rows[i][1])
+        if len(parts) > MAX_WORDS or "" in parts:
+            sys.exit("gen_property_index: %s: 1..%d non-empty words" % (rows[i][1], MAX_WORDS))
         keys.append((1 if rows[i][2] == "AXIS" else 0, rows[i][1].encode()))
     seed, bucket_bits, displacement, taken, slots = build_hash(keys)
     if len(rows) >= 0xFFFF:
@@ -136,37 +144,56 @@ def generate(rows, omit):
     out.append("#define DARAN_PROPERTY_INDEX_H")
     out.append("")
     out.append("#define DARAN_INDEX_PROPERTIES %du /* rows with a path in this build */" % len(kept))
-    out.append("#define DARAN_SEGMENT_COUNT %du" % len(segments))
+    out.append("#define DARAN_WORD_COUNT %du" % len(words))
     out.append("#define DARAN_HASH_SEED 0x%08xu" % seed)
     out.append("#define DARAN_HASH_BUCKET_BITS %du" % bucket_bits)
     out.append("#define DARAN_HASH_SLOTS %du" % slots)
     out.append("#define DARAN_HASH_EMPTY 0x%xu" % empty)
     out.append("typedef %s daran_hash_slot_t;" % slot_type)
     out.append("")
-    out.append("/* Every segment once, sorted, without terminators: */")
-    text = "".join(segments)
-    out.append("static const char segment_text[%d] =" % len(text))
-    for k in range(0, len(segments), 6):
-        out.append("    " + c_string("".join(segments[k:k + 6])))
+    out.append("/* Every word once, sorted, without terminators: */")
+    text = "".join(words)
+    out.append("static const char word_text[%d] =" % len(text))
+    for k in range(0, len(words), 10):
+        out.append("    " + c_string("".join(words[k:k + 10])))
     out[-1] += ";"
     out.append("")
-    out.append("/* Where segment n (1-based) ends in segment_text; it starts where n-1 ends. */")
+    out.append("/* Where word n (1-based) ends in word_text; it starts where n-1 ends. */")
     ends = []
     pos = 0
-    for seg in segments:
-        pos += len(seg)
+    for w in words:
+        pos += len(w)
         ends.append(pos)
-    out.append("static const uint16_t segment_end[DARAN_SEGMENT_COUNT] = {")
+    out.append("static const uint16_t word_end[DARAN_WORD_COUNT] = {")
     for k in range(0, len(ends), 12):
         out.append("    " + ", ".join(str(e) for e in ends[k:k + 12]) + ",")
     out.append("};")
     out.append("")
-    out.append("/* Segment numbers of each property's path (0 = none; all 0 = left out of this build). */")
-    out.append("static const uint8_t property_segments[DARAN_PROP_COUNT][3] = {")
+    refs = []
+    starts = []
+    dots = []
     for i, r in enumerate(rows):
-        segs = [number[s] for s in r[1].split(".")] if i in kept else []
-        segs += [0] * (3 - len(segs))
-        out.append("    {%d, %d, %d}, /* %s%s */" % (segs[0], segs[1], segs[2], r[0], "" if i in kept else " (omitted)"))
+        starts.append(len(refs))
+        if i in kept:
+            refs.extend(number[w] for w in words_of(r[1]))
+            dots.append(sum(1 << k for k, c in enumerate(separators_of(r[1])) if c == "."))
+        else:
+            dots.append(0)
+    starts.append(len(refs))
+    out.append("/* Each property's path as word numbers: property p's are")
+    out.append(" * path_words[path_start[p] .. path_start[p + 1]) (none: left out of this build). */")
+    out.append("static const uint8_t path_words[%d] = {" % max(1, len(refs)))
+    for k in range(0, len(refs), 20):
+        out.append("    " + ", ".join(str(x) for x in refs[k:k + 20]) + ",")
+    out.append("};")
+    out.append("static const uint16_t path_start[DARAN_PROP_COUNT + 1u] = {")
+    for k in range(0, len(starts), 16):
+        out.append("    " + ", ".join(str(x) for x in starts[k:k + 16]) + ",")
+    out.append("};")
+    out.append("/* Bit k set: the separator after word k is '.', else '_'. */")
+    out.append("static const uint8_t path_dots[DARAN_PROP_COUNT] = {")
+    for k in range(0, len(dots), 16):
+        out.append("    " + ", ".join(str(x) for x in dots[k:k + 16]) + ",")
     out.append("};")
     out.append("")
     out.append("/* type, access, scope, range, unit of each property. */")
@@ -193,7 +220,7 @@ def generate(rows, omit):
     out.append("};")
     out.append("")
     out.append("#endif /* DARAN_PROPERTY_INDEX_H */")
-    stats = {"rows": len(rows), "kept": len(kept), "segments": len(segments), "text": len(text),
+    stats = {"rows": len(rows), "kept": len(kept), "words": len(words), "text": len(text), "refs": len(refs),
              "slots": slots, "buckets": 1 << bucket_bits, "seed": seed}
     return "\n".join(out) + "\n", stats
 
