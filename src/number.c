@@ -53,6 +53,9 @@ typedef struct {
     size_t end;       /* index after the last non-zero digit; 0: all zero */
     int32_t exp10;    /* explicit exponent, saturated */
     int negative;
+    uint64_t w;       /* the first up to 19 digits from index z, as an integer */
+    uint32_t w_len;   /* how many digits w holds */
+    int truncated;    /* a non-zero digit follows the 19 in w (then w >= 10^18) */
 } number_scan_t;
 
 typedef struct {
@@ -144,19 +147,36 @@ uint64_t daran_pow10_hi(int32_t q)
 }
 
 /* The grammar [+-]?(digits[.digits*]|.digits)([eE][+-]?digits)?, all of it, in
- * one pass over the text that only counts: the counts stay in registers (stores
- * through s could alias the text and cost reloads). */
+ * one pass that counts and also gathers the significand: the first 19
+ * significant digits as an integer, which is all the common path needs. The
+ * counts stay in registers (stores through s could alias the text and cost
+ * reloads). */
 static int number_scan(const char *t, size_t len, number_scan_t *s)
 {
-    size_t i = 0, idx = 0, z = 0, end = 0, int_len = (size_t)-1, e_start;
+    size_t i = 0, idx = 0, z, end = 0, int_len = (size_t)-1, e_start;
     int32_t e = 0;
-    int eneg = 0;
+    int eneg = 0, truncated = 0;
+    uint64_t w = 0;
+    uint32_t taken = 0;
     s->negative = 0;
     if (len && (t[0] == '+' || t[0] == '-')) {
         s->negative = t[0] == '-';
         i = 1;
     }
     s->mant = t + i;
+    /* zeros (and the point) before the first non-zero digit */
+    for (; i < len; i++) {
+        if (t[i] == '0') {
+            idx++;
+        } else if (t[i] != '.' || int_len != (size_t)-1) {
+            break;
+        } else {
+            int_len = idx;
+        }
+    }
+    /* from the first non-zero digit: w takes 19 digits (trailing zeros
+     * included: they only change the exponent) */
+    z = idx;
     for (; i < len; i++) {
         uint32_t d = (uint32_t)(unsigned char)t[i] - (uint32_t)'0';
         if (d > 9u) {
@@ -167,13 +187,19 @@ static int number_scan(const char *t, size_t len, number_scan_t *s)
             continue;
         }
         idx++; /* digit idx - 1 */
+        if (taken < 19u) {
+            w = w * 10u + d;
+            taken++;
+        } else if (d) {
+            truncated = 1;
+        }
         if (d) {
-            if (!end) {
-                z = idx - 1u;
-            }
             end = idx;
         }
     }
+    s->w = w;
+    s->w_len = taken;
+    s->truncated = truncated;
     s->int_len = int_len == (size_t)-1 ? idx : int_len;
     s->total = idx;
     s->z = z;
@@ -362,55 +388,12 @@ static int decimal_to_bits(uint64_t w, int32_t q, int truncated, uint32_t *bits)
     return hi <= UINT64_MAX - d && round_bits(hi + d, 0, e) == *bits;
 }
 
-/* The shape hosts send nearly always, [+-]?digits[.digits] with at most 19
- * digits and no exponent, read in one pass straight into w * 10^q. Returns
- * 0 for anything else, which the general scan then judges. */
-static int scan_plain(const char *t, size_t len, uint64_t *w_out, int32_t *q_out, int *negative)
-{
-    const char *end = t + len;
-    const char *p = t;
-    uint64_t w = 0;
-    *negative = 0;
-    if (p < end && (*p == '-' || *p == '+')) {
-        *negative = *p == '-';
-        p++;
-    }
-    const char *digits = p;
-    for (; p < end && (uint32_t)(*p - '0') <= 9u; p++) {
-        w = w * 10u + (uint32_t)(*p - '0');
-    }
-    const char *point = p;
-    if (p < end && *p == '.') {
-        for (p++; p < end && (uint32_t)(*p - '0') <= 9u; p++) {
-            w = w * 10u + (uint32_t)(*p - '0');
-        }
-    }
-    size_t count = (size_t)(p - digits) - (point < p ? 1u : 0u);
-    if (p != end || count == 0u || count > 19u) {
-        return 0;
-    }
-    *w_out = w;
-    *q_out = point < p ? -(int32_t)(p - point - 1) : 0;
-    return 1;
-}
-
 daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
 {
     number_scan_t s;
     uint32_t bits = 0;
-    uint64_t w;
-    int32_t q;
-    int negative;
     if ((text == NULL && len != 0) || out == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
-    }
-    if (scan_plain(text, len, &w, &q, &negative) && (w == 0u || decimal_to_bits(w, q, 0, &bits))) {
-        if (bits >= DARAN_F32_INF) {
-            return DARAN_ERR_OUT_OF_RANGE;
-        }
-        bits |= (uint32_t)negative << 31;
-        memcpy(out, &bits, sizeof bits);
-        return DARAN_OK;
     }
     if (!number_scan(text, len, &s)) {
         return DARAN_ERR_INVALID_VALUE;
@@ -418,16 +401,8 @@ daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
     if (s.end) {
         /* Up to 19 significant digits; truncated: a non-zero digit follows them,
          * and then all 19 are kept, so w >= 10^18 (see decimal_to_bits). */
-        size_t n = s.end - s.z, i;
-        int truncated = n > 19u;
-        w = 0;
-        if (truncated) {
-            n = 19u;
-        }
-        for (i = s.z; i < s.z + n; i++) {
-            w = w * 10u + digit_at(&s, i);
-        }
-        if (!decimal_to_bits(w, diff_saturated(s.int_len, s.z + n) + s.exp10, truncated, &bits)) {
+        if (!decimal_to_bits(s.w, diff_saturated(s.int_len, s.z + s.w_len) + s.exp10,
+                             s.truncated, &bits)) {
             bits = big_decide(&s, bits);
         }
         if (bits >= DARAN_F32_INF) {
