@@ -7,6 +7,7 @@
 #include "daran_config.h"
 #include "daran_drive.h"
 #include "daran_hal.h"
+#include "daran_port.h"
 #include "daran_properties.h"
 #include "daran_result.h"
 

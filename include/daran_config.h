@@ -33,10 +33,12 @@
 #endif
 
 /** Longest reply line, in bytes including the optional " *NNN" and the line
- * end. Kept at 88 or more: room for every reply the core builds (the
- * longest today, `f` with two 16-character floats, takes 42). */
+ * end. 88 or more: room for every reply the core builds (a discovery line
+ * takes 78 at most). A telemetry report with all nine fields can take 159:
+ * with less room `w axisN.telemetry.fields` refuses the field sets whose
+ * report might not fit (`value out of range`). */
 #ifndef DARAN_REPLY_MAX
-#define DARAN_REPLY_MAX 96
+#define DARAN_REPLY_MAX 160
 #endif
 
 /** 1 (default): reply lines end in `\r\n`, as the ODrive firmware's do and as

@@ -70,12 +70,17 @@ typedef struct daran_rx_ring {
  * DARAN_FIELDS_MAX is the most fields a command has (d: word, id and 5
  * values) plus one to tell "too many". */
 #define DARAN_FIELDS_MAX 8u
+#if DARAN_LINE_MAX <= 255
+typedef uint8_t daran_line_offset_t;
+#else
+typedef uint16_t daran_line_offset_t;
+#endif
 typedef struct daran_fields {
-    const char *base;
-    uint16_t start[DARAN_FIELDS_MAX];
-    uint16_t len[DARAN_FIELDS_MAX];
+    daran_line_offset_t start[DARAN_FIELDS_MAX];
+    daran_line_offset_t len[DARAN_FIELDS_MAX];
     uint8_t count; /* fields found, saturating at DARAN_FIELDS_MAX */
 } daran_fields_t;
+struct daran_port_command;
 /** @endcond */
 
 /** One drive. Size: sizeof(daran_drive_t), known at compile time. */
@@ -87,6 +92,9 @@ typedef struct daran_drive {
     void *write_ctx;
     daran_forward_fn forward;
     void *forward_ctx;
+    const struct daran_port_command *port_commands;
+    void *port_ctx;
+    uint32_t telemetry_next; /* tick of the next report */
     daran_rx_ring_t rx;
     uint16_t line_len;       /* bytes of the current line so far (saturates past DARAN_LINE_MAX) */
     uint16_t star_at;        /* index of the line's first '*', DARAN_LINE_MAX when none yet */
@@ -95,9 +103,10 @@ typedef struct daran_drive {
     uint8_t line_xor;        /* XOR of the line's bytes before its first '*' */
     uint8_t reply_checksum;  /* the current request carried a checksum field */
     uint8_t has_preset;
+    uint8_t port_command_count;
     float preset[3];
     daran_fields_t fields;
-    char line[DARAN_LINE_MAX + 8]; /* 8: the framer stores whole words */
+    char line[DARAN_LINE_MAX];
     char reply[DARAN_REPLY_MAX];
     /** @endcond */
 } daran_drive_t;

@@ -14,20 +14,30 @@
  *   unit   shown by discovery and in docs; "" when the value has none
  *
  * The vendor's whole table (shared/vendor/properties.csv) plus the
- * extensions serial_number, config.enable_watchdog, config.watchdog_timeout
- * and config_warnings. Rows are sorted by the path as a host writes it
- * (`axis0.` in front of AXIS paths), which is the order discovery lists them
- * in. Lookup does not depend on the order: tools/gen_property_index.py makes
- * a perfect hash of the paths at build time, leaving out the rows named in
- * the CMake list DARAN_PROPERTY_OMIT (their ids stay, their paths answer
- * `invalid property`).
+ * extensions serial_number, config.enable_watchdog, config.watchdog_timeout,
+ * config_warnings and the telemetry settings (protocol.md section 11). Rows
+ * are sorted by the path as a host writes it (`axis0.` in front of AXIS
+ * paths), the order discovery lists them in. Lookup does not depend on the
+ * order: tools/gen_property_index.py makes a perfect hash of the paths at
+ * build time.
+ *
+ * A port changes the table without editing this file, in its options header
+ * (DARAN_CONFIG_HEADER, see daran_config.h and docs/porting.md):
+ *   DARAN_PORT_PROPERTY_LIST(X)  its own rows, in the same X form; their ids
+ *                                follow the vendor's (DARAN_PROP_<ID>)
+ *   DARAN_OMIT_PROPERTIES(X)     X(ID) for each vendor row it leaves out: the
+ *                                id stays, the path answers `invalid property`
+ * (the CMake list DARAN_PROPERTY_OMIT leaves rows out too). A port path that
+ * collides with another stops the build.
  *
  * Rotor-side families (controller.*, encoder.*, motor.*, trap_traj.*) are in
  * ODrive units (turns, turn/s, A, counts); output_shaft.* in protocol units
  * (degrees, r/min, Nm); config.extra_setting.gear_ratio links the two. The
- * ranges and units are explained in docs/protocol.md. */
+ * ranges and units are in docs/properties.md. */
 #ifndef DARAN_PROPERTIES_H
 #define DARAN_PROPERTIES_H
+
+#include "daran_config.h"
 
 /** The property list: one X(ID, path, scope, type, access, range, unit) per
  * property, in the order described at the top of this file. */
@@ -171,6 +181,8 @@
     X(VEL_RAMP_RATE,                      "output_shaft.vel_ramp_rate",                          AXIS,   F32,  RW, NON_NEGATIVE, "(r/min)/s") \
     X(VEL_SETPOINT,                       "output_shaft.vel_setpoint",                           AXIS,   F32,  RW, NONE,         "r/min") \
     X(REQUESTED_STATE,                    "requested_state",                                     AXIS,   U32,  RW, AXIS_STATE,   "") \
+    X(TELEMETRY_FIELDS,                   "telemetry.fields",                                    AXIS,   U32,  RW, TELEMETRY,    "flags") \
+    X(TELEMETRY_PERIOD,                   "telemetry.period",                                    AXIS,   F32,  RW, NON_NEGATIVE, "s") \
     X(TRAP_ACCEL_LIMIT,                   "trap_traj.config.accel_limit",                        AXIS,   F32,  RW, NON_NEGATIVE, "(turn/s)/s") \
     X(TRAP_DECEL_LIMIT,                   "trap_traj.config.decel_limit",                        AXIS,   F32,  RW, NON_NEGATIVE, "(turn/s)/s") \
     X(TRAJ_MODE,                          "trap_traj.config.traj_mode",                          AXIS,   U32,  RW, TRAJ_MODE,    "") \
@@ -202,6 +214,9 @@ typedef enum daran_prop {
 /** @cond INTERNAL */
 #define DARAN_PROP_ENUM_(id, path, scope, type, access, range, unit) DARAN_PROP_##id,
     DARAN_PROPERTY_LIST(DARAN_PROP_ENUM_)
+#ifdef DARAN_PORT_PROPERTY_LIST
+    DARAN_PORT_PROPERTY_LIST(DARAN_PROP_ENUM_)
+#endif
 #undef DARAN_PROP_ENUM_
 /** @endcond */
     DARAN_PROP_COUNT
@@ -236,6 +251,7 @@ typedef enum daran_range {
     DARAN_RANGE_DIRECTION,    /**< -1 or 1 */
     DARAN_RANGE_MOTOR_TYPE,   /**< ODrive motor types 0 high current, 2 gimbal, 3 ACIM */
     DARAN_RANGE_POLE_PAIRS,   /**< 1..128 */
+    DARAN_RANGE_TELEMETRY,    /**< 0..511: the telemetry field bits */
     DARAN_RANGE_COUNT         /**< how many ranges there are; not a range */
 } daran_range_t;
 

@@ -3,6 +3,8 @@
  * the rows and the `h` text, so they cannot drift apart. */
 #include "internal.h"
 
+#include "daran_port.h"
+
 enum handler {
     HANDLER_MOTION,
     HANDLER_MS,
@@ -56,7 +58,7 @@ enum handler {
     X("st", 2, 2, 0, DARAN_ACTION_ESTOP, HANDLER_ACTION, "")
 
 #if DARAN_ENABLE_HELP
-#define HELP_COMMAND(X) X("h", 2, 2, READ, 0, HANDLER_H, "")
+#define HELP_COMMAND(X) X("h", 2, 4, READ, 0, HANDLER_H, "[properties [prefix]]")
 #else
 #define HELP_COMMAND(X)
 #endif
@@ -85,9 +87,13 @@ static const daran_command_t commands[] = {DARAN_COMMANDS(COMMAND_ROW)};
 static const char help_text[] = DARAN_COMMANDS(HELP_LINE);
 #undef HELP_LINE
 
+/* `h id`: a line per command, the core's then the port's; `h id properties
+ * [prefix]`: discovery (discovery.c). */
 static daran_result_t command_h(daran_drive_t *drive, const daran_request_t *request)
 {
-    (void)request;
+    if (request->fields->count > 2u) {
+        return daran_cmd_discovery(drive, request);
+    }
     const char *arguments = help_text;
     for (size_t i = 0; i < COMMAND_COUNT; i++) {
         const daran_command_t *command = &commands[i];
@@ -105,6 +111,17 @@ static daran_result_t command_h(daran_drive_t *drive, const daran_request_t *req
             arguments++;
         }
         arguments++;
+    }
+    for (size_t i = 0; i < drive->port_command_count; i++) {
+        const daran_port_command_t *command = &drive->port_commands[i];
+        daran_reply_begin(drive);
+        daran_reply_cstr(drive, command->word);
+        daran_reply_text(drive, " id", 3);
+        if (command->help[0] != '\0') {
+            daran_reply_space(drive);
+            daran_reply_cstr(drive, command->help);
+        }
+        daran_reply_end(drive);
     }
     return DARAN_OK;
 }

@@ -171,11 +171,10 @@ daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *req
 {
     daran_shape_t shape_id = (daran_shape_t)request->command->arg;
     const motion_shape_t *shape = &shapes[shape_id];
-    const daran_fields_t *fields = request->fields;
-    uint8_t count = (uint8_t)(fields->count - 2u);
+    uint8_t count = (uint8_t)(request->fields->count - 2u);
     float values[5];
     for (uint8_t i = 0; i < count; i++) {
-        daran_field_t field = daran_field_at(fields, 2u + i);
+        daran_field_t field = daran_field_at(request, 2u + i);
         daran_result_t result = parse_value(&field, CHECK_OF(shape->value[i]), &values[i]);
         if (result != DARAN_OK) {
             return result;

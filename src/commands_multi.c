@@ -17,7 +17,7 @@ daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request
 {
     float values[3];
     for (uint8_t i = 0; i < 3u; i++) {
-        daran_field_t field = daran_field_at(request->fields, 2u + i);
+        daran_field_t field = daran_field_at(request, 2u + i);
         daran_result_t result = daran_field_f32(&field, &values[i]);
         if (result != DARAN_OK) {
             return result;
@@ -134,7 +134,7 @@ daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *requ
     daran_shape_t shape = (daran_shape_t)request->command->arg;
     uint32_t rel = 0;
     if (request->fields->count == 3u) { /* mt, mq, mp: 0 absolute, 1 relative */
-        daran_field_t field = daran_field_at(request->fields, 2);
+        daran_field_t field = daran_field_at(request, 2);
         daran_result_t result = daran_field_mode(&field, (1u << 0) | (1u << 1), &rel);
         if (result != DARAN_OK) {
             return result;

@@ -8,48 +8,7 @@ daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request)
     return daran_reply_properties(drive, &request->prop, 1);
 }
 
-/* A range as data: an interval [low, high] or a set of values, and what
- * it means for a float32. One row per daran_range_t. */
-enum rule_kind { RULE_INTERVAL, RULE_SET };
-typedef struct range_rule {
-    uint8_t kind;
-    uint8_t set_len;   /* RULE_SET: how many values, from range_sets[low] */
-    int8_t float_sign; /* F32: -1 <= 0, 0 any, 1 >= 0, 2 > 0 */
-    int32_t low;
-    int32_t high;
-} range_rule_t;
-
-#define ANY_INT {RULE_INTERVAL, 0, 0, INT32_MIN, INT32_MAX}
-static const int32_t range_sets[] = {
-    9600, 19200, 38400, 57600, 115200, /* 0: UART_BAUD */
-    125000, 250000, 500000, 1000000,   /* 5: CAN_BAUD */
-    (int32_t)DARAN_STATE_IDLE, (int32_t)DARAN_STATE_CLOSED_LOOP, /* 9: AXIS_STATE */
-    1, 2, 3, 5, 6, 9,                  /* 11: INPUT_MODE */
-    -1, 1,                             /* 17: DIRECTION */
-    0, 2, 3,                           /* 19: MOTOR_TYPE */
-};
-
-static const range_rule_t range_rules[DARAN_RANGE_COUNT] = {
-    [DARAN_RANGE_NONE] = ANY_INT,
-    [DARAN_RANGE_NON_NEGATIVE] = {RULE_INTERVAL, 0, 1, 0, INT32_MAX},
-    [DARAN_RANGE_POSITIVE] = {RULE_INTERVAL, 0, 2, 1, INT32_MAX},
-    [DARAN_RANGE_NON_POSITIVE] = {RULE_INTERVAL, 0, -1, INT32_MIN, 0},
-    [DARAN_RANGE_BOOL] = {RULE_INTERVAL, 0, 0, 0, 1},
-    [DARAN_RANGE_ZERO] = {RULE_INTERVAL, 0, 0, 0, 0},
-    [DARAN_RANGE_NODE_ID] = {RULE_INTERVAL, 0, 0, 1, DARAN_MOTOR_ID_MAX},
-    [DARAN_RANGE_UART_BAUD] = {RULE_SET, 5, 0, 0, 0},
-    [DARAN_RANGE_CAN_BAUD] = {RULE_SET, 4, 0, 5, 0},
-    [DARAN_RANGE_CAN_PROTOCOL] = {RULE_INTERVAL, 0, 0, 0, 1},
-    [DARAN_RANGE_AXIS_STATE] = {RULE_SET, 2, 0, 9, 0},
-    [DARAN_RANGE_CONTROL_MODE] = {RULE_INTERVAL, 0, 0, 1, 3},
-    [DARAN_RANGE_INPUT_MODE] = {RULE_SET, 6, 0, 11, 0},
-    [DARAN_RANGE_TRAJ_MODE] = {RULE_INTERVAL, 0, 0, 1, 2},
-    [DARAN_RANGE_DIRECTION] = {RULE_SET, 2, 0, 17, 0},
-    [DARAN_RANGE_MOTOR_TYPE] = {RULE_SET, 3, 0, 19, 0},
-    [DARAN_RANGE_POLE_PAIRS] = {RULE_INTERVAL, 0, 0, 1, 128},
-};
-
-static bool float_in_range(const range_rule_t *rule, float value)
+static bool float_in_range(const daran_range_rule_t *rule, float value)
 {
     switch (rule->float_sign) {
     case -1:
@@ -63,13 +22,13 @@ static bool float_in_range(const range_rule_t *rule, float value)
     }
 }
 
-static bool integer_in_range(const range_rule_t *rule, int64_t value)
+static bool integer_in_range(const daran_range_rule_t *rule, int64_t value)
 {
-    if (rule->kind == RULE_INTERVAL) {
+    if (rule->kind == DARAN_RULE_INTERVAL) {
         return value >= rule->low && value <= rule->high;
     }
     for (uint8_t i = 0; i < rule->set_len; i++) {
-        if (value == range_sets[rule->low + i]) {
+        if (value == daran_range_sets[rule->low + i]) {
             return true;
         }
     }
@@ -98,7 +57,8 @@ static daran_result_t parse_integer(daran_prop_type_t type, const daran_field_t 
 static daran_result_t parse_value(daran_property_t row, const daran_field_t *field,
                                   daran_value_t *value)
 {
-    const range_rule_t *rule = &range_rules[DARAN_PROPERTY_RANGE(row)];
+    daran_range_t range = DARAN_PROPERTY_RANGE(row);
+    const daran_range_rule_t *rule = &daran_range_rules[range];
     daran_prop_type_t type = DARAN_PROPERTY_TYPE(row);
     if (type == DARAN_TYPE_F32) {
         daran_result_t result = daran_field_f32(field, &value->f32);
@@ -122,10 +82,13 @@ static daran_result_t parse_value(daran_property_t row, const daran_field_t *fie
         return DARAN_ERR_OUT_OF_RANGE;
     }
     int64_t signed_value = negative ? -(int64_t)magnitude : (int64_t)magnitude;
-    bool unbounded_u32 = type != DARAN_TYPE_S32 && rule->kind == RULE_INTERVAL &&
+    bool unbounded_u32 = type != DARAN_TYPE_S32 && rule->kind == DARAN_RULE_INTERVAL &&
                          rule->high == INT32_MAX && signed_value >= rule->low;
     if (!unbounded_u32 && !integer_in_range(rule, signed_value)) {
         return DARAN_ERR_OUT_OF_RANGE;
+    }
+    if (range == DARAN_RANGE_TELEMETRY && !daran_telemetry_fits((uint32_t)magnitude)) {
+        return DARAN_ERR_OUT_OF_RANGE; /* its report might not fit DARAN_REPLY_MAX */
     }
     if (type == DARAN_TYPE_S32) {
         value->s32 = (int32_t)signed_value;
@@ -143,7 +106,7 @@ daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)
     }
     daran_value_t value;
     value.u64 = 0;
-    daran_field_t field = daran_field_at(request->fields, 2);
+    daran_field_t field = daran_field_at(request, 2);
     daran_result_t result = parse_value(row, &field, &value);
     if (result != DARAN_OK) {
         return result;

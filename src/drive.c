@@ -3,6 +3,8 @@
  * reply. This file runs the road; no stage calls back into it. */
 #include "internal.h"
 
+#include "daran_port.h"
+
 daran_result_t daran_init_sized(daran_drive_t *drive, size_t drive_size, const daran_hal_t *hal,
                                 void *hal_ctx, daran_write_fn write, void *write_ctx)
 {
@@ -80,9 +82,22 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
         /* Blank lines are ignored; a checksum with no command is not (D5). */
         return drive->reply_checksum ? DARAN_ERR_UNKNOWN_COMMAND : DARAN_OK;
     }
-    daran_field_t word = daran_field_at(fields, 0);
+    daran_field_t word = daran_field_of(line->text, fields, 0);
+    /* The core's commands first, then the port's: a port cannot shadow one. */
     const daran_command_t *command = daran_find_command(&word);
-    if (command == NULL) {
+    const daran_port_command_t *port = NULL;
+    uint8_t flags;
+    unsigned min_fields;
+    unsigned max_fields;
+    if (command != NULL) {
+        flags = command->flags;
+        min_fields = DARAN_MIN_FIELDS(command);
+        max_fields = DARAN_MAX_FIELDS(command);
+    } else if ((port = daran_find_port_command(drive, &word)) != NULL) {
+        flags = (port->flags & DARAN_PORT_COMMAND_QUERY) != 0u ? DARAN_CMD_READ : 0u;
+        min_fields = 2u + port->min_values;
+        max_fields = 2u + port->max_values;
+    } else {
         return DARAN_ERR_UNKNOWN_COMMAND;
     }
     if (count < 2u) {
@@ -92,20 +107,20 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     /* Where the id is: field 1; for r/w the N of `axisN.`, or the last field
      * of a system path, absent meaning 0 (D8, D9). The property is looked up
      * here but reported after the id and the field count, in spec order. */
-    daran_request_t request = {command, fields, 0, DARAN_PROP_COUNT};
-    bool count_ok = count >= DARAN_MIN_FIELDS(command) && count <= DARAN_MAX_FIELDS(command);
+    daran_request_t request = {command, line->text, fields, 0, DARAN_PROP_COUNT};
+    bool count_ok = count >= min_fields && count <= max_fields;
     daran_result_t property = DARAN_OK;
-    daran_field_t id = daran_field_at(fields, 1);
-    if ((command->flags & DARAN_CMD_PATH) != 0u) {
+    daran_field_t id = daran_field_of(line->text, fields, 1);
+    if ((flags & DARAN_CMD_PATH) != 0u) {
         daran_field_t path = id;
         daran_field_t name = path;
         daran_scope_t scope = DARAN_SCOPE_SYSTEM;
         if (split_axis_path(&path, &id, &name)) {
             scope = DARAN_SCOPE_AXIS;
-            count_ok = count == DARAN_MIN_FIELDS(command);
-        } else if (count == DARAN_MAX_FIELDS(command)) {
-            id = daran_field_at(fields, count - 1u);
-        } else if (count == DARAN_MIN_FIELDS(command)) {
+            count_ok = count == min_fields;
+        } else if (count == max_fields) {
+            id = daran_field_of(line->text, fields, count - 1u);
+        } else if (count == min_fields) {
             id.text = NULL; /* no id: every drive */
         } else {
             return DARAN_ERR_INVALID_FORMAT;
@@ -125,7 +140,7 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     /* Another drive's line, or a broadcast that is not a read, goes to the
      * gateway too (D10); only the broadcast also runs here. */
     bool elsewhere = request.motor != 0u && request.motor != own;
-    bool broadcast = request.motor == 0u && (command->flags & DARAN_CMD_READ) == 0u;
+    bool broadcast = request.motor == 0u && (flags & DARAN_CMD_READ) == 0u;
     if ((elsewhere || broadcast) && drive->forward != NULL) {
         drive->forward(drive->forward_ctx, request.motor, line->text, line->len);
     }
@@ -137,6 +152,9 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     }
     if (property != DARAN_OK) {
         return property;
+    }
+    if (port != NULL) {
+        return daran_from_hal(port->handler(drive, &request, drive->port_ctx));
     }
     return daran_run_command(drive, &request);
 }

@@ -17,7 +17,6 @@ void daran_framer_reset(daran_drive_t *drive)
     drive->line_flags = 0;
     drive->star_at = DARAN_LINE_MAX;
     drive->line_xor = 0;
-    drive->fields.base = drive->line;
     drive->fields.count = 0;
 }
 
@@ -63,7 +62,7 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
             if ((flags & DARAN_LINE_IN_FIELD) == 0u) {
                 flags |= DARAN_LINE_IN_FIELD;
                 if (count < DARAN_FIELDS_MAX) {
-                    fields->start[count++] = (uint16_t)len;
+                    fields->start[count++] = (daran_line_offset_t)len;
                 }
             }
             /* the rest of the field in a tight loop, within the line's room */
@@ -85,7 +84,7 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
              * length, which is never read: the line has too many fields
              * whatever its command. */
             flags &= (uint8_t)~DARAN_LINE_IN_FIELD;
-            fields->len[count - 1u] = (uint16_t)(len - fields->start[count - 1u]);
+            fields->len[count - 1u] = (daran_line_offset_t)(len - fields->start[count - 1u]);
         }
         if (byte == ' ' && star_at == DARAN_LINE_MAX) {
             line[len++] = ' ';
@@ -113,9 +112,9 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
     }
     if ((flags & DARAN_LINE_IN_FIELD) != 0u) {
         /* the field runs on into the next bytes, or the text ends in it */
-        fields->len[count - 1u] = (uint16_t)(len - fields->start[count - 1u]);
+        fields->len[count - 1u] = (daran_line_offset_t)(len - fields->start[count - 1u]);
     }
-    drive->line_len = (uint16_t)len;
+    drive->line_len = (daran_line_offset_t)len;
     drive->star_at = (uint16_t)star_at;
     drive->line_flags = flags;
     drive->line_xor = sum;

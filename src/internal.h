@@ -21,22 +21,31 @@ typedef struct daran_field {
     uint16_t len;
 } daran_field_t;
 
-/* Field i as a view. */
-static inline daran_field_t daran_field_at(const daran_fields_t *fields, unsigned i)
+/* Field i of a line as a view. */
+static inline daran_field_t daran_field_of(const char *line, const daran_fields_t *fields,
+                                           unsigned i)
 {
-    daran_field_t field = {fields->base + fields->start[i], fields->len[i]};
+    daran_field_t field = {line + fields->start[i], fields->len[i]};
     return field;
 }
 
-/* One request on its way from the table to the HAL. */
+/* One request on its way from the table to the HAL (also what a port
+ * command's handler gets, as daran_args_t). */
 struct daran_command;
 
 typedef struct daran_request {
-    const struct daran_command *command;
+    const struct daran_command *command; /* NULL for a port command */
+    const char *line;
     const daran_fields_t *fields;
     uint8_t motor;      /* addressed id; 0 = every drive */
     daran_prop_t prop;  /* r/w only */
 } daran_request_t;
+
+/* Field i of a request's line. */
+static inline daran_field_t daran_field_at(const daran_request_t *request, unsigned i)
+{
+    return daran_field_of(request->line, request->fields, i);
+}
 
 typedef daran_result_t (*daran_handler_fn)(daran_drive_t *drive, const daran_request_t *request);
 
@@ -116,6 +125,32 @@ daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *re
 
 /* property_table.c */
 daran_property_t daran_property_row(daran_prop_t prop);
+
+/* A range as data: an interval [low, high] or a set of values
+ * (daran_range_sets[low], set_len of them), and what it means for a
+ * float32 (float_sign: -1 <= 0, 0 any, 1 >= 0, 2 > 0). One row per
+ * daran_range_t: `w` checks with it, discovery prints it. */
+enum { DARAN_RULE_INTERVAL, DARAN_RULE_SET };
+typedef struct daran_range_rule {
+    uint8_t kind;
+    uint8_t set_len;
+    int8_t float_sign;
+    int32_t low;
+    int32_t high;
+} daran_range_rule_t;
+extern const daran_range_rule_t daran_range_rules[DARAN_RANGE_COUNT];
+extern const int32_t daran_range_sets[];
+
+/* Discovery: every property this build knows, in path order: start with
+ * *cursor 0; DARAN_PROP_COUNT after the last. */
+daran_prop_t daran_discovery_next(size_t *cursor);
+/* Append property @p prop's path as a host writes it (`axis0.` for AXIS). */
+void daran_reply_path(daran_drive_t *drive, daran_prop_t prop);
+/* The unit text of a property, or "-" when it has none. */
+const char *daran_unit_text(daran_property_t row);
+
+/* telemetry.c: can a report with these field bits always fit a reply? */
+bool daran_telemetry_fits(uint32_t fields);
 /* DARAN_OK with *prop set, or DARAN_ERR_INVALID_PROPERTY. */
 daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t len,
                                    daran_prop_t *prop);
@@ -141,6 +176,10 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
 /* drive.c: run the line the framer finished (or reject it), and reset the
  * framer. Returns what daran_process_line() returns. */
 daran_result_t daran_run_framed_line(daran_drive_t *drive);
+
+/* port_commands.c: the port's command of that word, or NULL */
+const struct daran_port_command *daran_find_port_command(const daran_drive_t *drive,
+                                                         const daran_field_t *word);
 
 /* commands_common.c: what every handler needs */
 daran_result_t daran_field_f32(const daran_field_t *field, float *out);
@@ -195,5 +234,6 @@ daran_result_t daran_cmd_f(daran_drive_t *drive, const daran_request_t *request)
 daran_result_t daran_cmd_g(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_i(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_e(daran_drive_t *drive, const daran_request_t *request);
+daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *request);
 
 #endif /* DARAN_INTERNAL_H */

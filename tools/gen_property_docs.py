@@ -21,6 +21,7 @@ RANGES = {
     "CAN_BAUD": "{125000,250000,500000,1000000}", "CAN_PROTOCOL": "0..1",
     "AXIS_STATE": "{1,8}", "CONTROL_MODE": "1..3", "INPUT_MODE": "{1,2,3,5,6,9}",
     "TRAJ_MODE": "1..2", "DIRECTION": "{-1,1}", "MOTOR_TYPE": "{0,2,3}", "POLE_PAIRS": "1..128",
+    "TELEMETRY": "0..511",
 }
 
 

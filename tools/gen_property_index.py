@@ -30,16 +30,37 @@ MAX_WORDS = 8  # separators fit one byte
 ROW_RE = re.compile(r'X\(\s*(\w+)\s*,\s*"([^"]*)"\s*,\s*(SYSTEM|AXIS)\s*,\s*(\w+)\s*,\s*(RO|RW)\s*,\s*(\w+)\s*,\s*"([^"]*)"\s*\)')
 
 
-def read_rows(path):
+def macro_body(text, name):
+    """The body of `#define name(X) ...`, its continuation lines joined; None
+    when the text does not define it."""
+    match = re.search(r"^[ \t]*#[ \t]*define[ \t]+" + name + r"\(X\)(.*)$", text, re.M)
+    if not match:
+        return None
+    body = []
+    rest = text[match.start(1):].split("\n")
+    for line in rest:
+        body.append(line.rstrip("\\ \t"))
+        if not line.rstrip().endswith("\\"):
+            break
+    return " ".join(body)
+
+
+def read_rows(path, name="DARAN_PROPERTY_LIST", required=True):
     text = open(path, encoding="ascii").read()
-    start = text.find("#define DARAN_PROPERTY_LIST(X)")
-    if start < 0:
-        sys.exit("gen_property_index: no DARAN_PROPERTY_LIST in " + path)
-    end = text.find("\n\n", start)
-    rows = ROW_RE.findall(text[start:end])
-    if not rows:
-        sys.exit("gen_property_index: no X(...) rows in " + path)
+    body = macro_body(text, name)
+    if body is None:
+        if required:
+            sys.exit("gen_property_index: no %s in %s" % (name, path))
+        return []
+    rows = ROW_RE.findall(body)
+    if required and not rows:
+        sys.exit("gen_property_index: no X(...) rows in %s of %s" % (name, path))
     return rows
+
+
+def read_omitted(path):
+    body = macro_body(open(path, encoding="ascii").read(), "DARAN_OMIT_PROPERTIES")
+    return set(re.findall(r"X\(\s*(\w+)\s*\)", body)) if body else set()
 
 
 def fnv(seed, scope, data):
@@ -107,7 +128,8 @@ def generate(rows, omit):
     for i in kept:
         key = (rows[i][2], rows[i][1])
         if key in seen:
-            sys.exit("gen_property_index: path %s appears twice" % rows[i][1])
+            sys.exit("gen_property_index: path %s appears twice (a port row must not reuse a vendor path; "
+                     "omit the vendor row first)" % rows[i][1])
         seen.add(key)
 
     def words_of(path):
@@ -219,6 +241,20 @@ def generate(rows, omit):
         out.append("    " + ", ".join(cells[k:k + 12]) + ",")
     out.append("};")
     out.append("")
+    full = lambda i: (("axis0." if rows[i][2] == "AXIS" else "") + rows[i][1]).encode()
+    order = sorted(kept, key=full)
+    if order == kept:
+        out.append("/* Discovery lists the rows in id order: that is path order. */")
+        out.append("#define DARAN_DISCOVERY_IN_ID_ORDER 1")
+    else:
+        out.append("/* Discovery's order (by path as a host writes it): a port's rows are not at the end. */")
+        out.append("#define DARAN_DISCOVERY_IN_ID_ORDER 0")
+        out.append("static const %s discovery_order[%d] = {" % (slot_type, len(order)))
+        for k in range(0, len(order), 16):
+            out.append("    " + ", ".join(str(x) for x in order[k:k + 16]) + ",")
+        out.append("};")
+    out.append("#define DARAN_DISCOVERY_COUNT %du" % len(order))
+    out.append("")
     out.append("#endif /* DARAN_PROPERTY_INDEX_H */")
     stats = {"rows": len(rows), "kept": len(kept), "words": len(words), "text": len(text), "refs": len(refs),
              "slots": slots, "buckets": 1 << bucket_bits, "seed": seed}
@@ -230,10 +266,24 @@ def main():
     parser.add_argument("--list", required=True, help="header with DARAN_PROPERTY_LIST")
     parser.add_argument("--out", required=True, help="header to write")
     parser.add_argument("--omit", default="", help="property ids to leave out, comma or semicolon separated")
+    parser.add_argument("--config", default="", help="the port's options header: DARAN_PORT_PROPERTY_LIST, DARAN_OMIT_PROPERTIES")
     parser.add_argument("--stats", action="store_true", help="print table sizes")
     args = parser.parse_args()
     omit = {x for x in re.split(r"[,;\s]+", args.omit) if x}
-    text, stats = generate(read_rows(args.list), omit)
+    rows = read_rows(args.list)
+    vendor = {r[0] for r in rows}
+    if args.config:
+        port_rows = read_rows(args.config, "DARAN_PORT_PROPERTY_LIST", required=False)
+        for r in port_rows:
+            if r[0] in vendor:
+                sys.exit("gen_property_index: port property %s reuses a vendor id" % r[0])
+        rows += port_rows
+        port_omit = read_omitted(args.config)
+        unknown = sorted(port_omit - vendor)
+        if unknown:
+            sys.exit("gen_property_index: DARAN_OMIT_PROPERTIES names no vendor property: " + " ".join(unknown))
+        omit |= port_omit
+    text, stats = generate(rows, omit)
     try:
         old = open(args.out, encoding="ascii").read()
     except OSError:

@@ -32,7 +32,7 @@ enum { T_F32, T_U32, T_S32, T_U64, T_BOOL };
 enum {
     R_NONE, R_NON_NEGATIVE, R_POSITIVE, R_NON_POSITIVE, R_BOOL, R_ZERO, R_NODE_ID, R_UART_BAUD,
     R_CAN_BAUD, R_CAN_PROTOCOL, R_AXIS_STATE, R_CONTROL_MODE, R_INPUT_MODE, R_TRAJ_MODE,
-    R_DIRECTION, R_MOTOR_TYPE, R_POLE_PAIRS
+    R_DIRECTION, R_MOTOR_TYPE, R_POLE_PAIRS, R_TELEMETRY
 };
 
 typedef struct bl_property {
@@ -67,6 +67,7 @@ typedef struct bl_property {
 #define BL_R_DIRECTION R_DIRECTION
 #define BL_R_MOTOR_TYPE R_MOTOR_TYPE
 #define BL_R_POLE_PAIRS R_POLE_PAIRS
+#define BL_R_TELEMETRY R_TELEMETRY
 
 /* Same names as the library (the X-macro list is the protocol's property
  * list: the vendor's whole table), but a plain array of C strings scanned
@@ -779,6 +780,8 @@ static int integer_in_range(int range, double value)
         return value == 0.0 || value == 2.0 || value == 3.0;
     case R_POLE_PAIRS:
         return value >= 1.0 && value <= 128.0;
+    case R_TELEMETRY:
+        return value >= 0.0 && value <= 511.0; /* every set fits the default reply */
     default:
         return 1;
     }

@@ -1,6 +1,8 @@
 /* The simulated multi-drop line between a host and N drives. */
 #include "sim_bus.h"
 
+#include "daran_port.h"
+
 #include <string.h>
 
 static void node_write(void *ctx, const char *line, size_t len)
@@ -106,6 +108,11 @@ void daran_sim_bus_tick(daran_sim_bus_t *bus)
         daran_sim_model_tick(&bus->node[i].sim.model);
     }
     bus->ticks++;
+    /* after the tick, as a drive's main loop would: reports go out with the
+     * replies, in time order */
+    for (i = 0; i < bus->count; i++) {
+        (void)daran_telemetry_tick(&bus->node[i].proto, (uint32_t)bus->ticks, bus->tick_hz);
+    }
 }
 
 void daran_sim_bus_power_cycle(daran_sim_bus_t *bus, uint32_t index)

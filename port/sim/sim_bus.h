@@ -53,7 +53,8 @@ void daran_sim_bus_send(daran_sim_bus_t *bus, const char *bytes, size_t len);
  * index order), and clear them. Returns how many drives had replies. */
 uint32_t daran_sim_bus_collect(daran_sim_bus_t *bus, daran_sim_sink_fn sink, void *ctx);
 
-/* One control tick on every drive. */
+/* One control tick on every drive, then each drive's telemetry (its
+ * reports wait with the replies for daran_sim_bus_collect()). */
 void daran_sim_bus_tick(daran_sim_bus_t *bus);
 
 /* Power-cycle drive @p index: new protocol instance (no preset, empty ring),

@@ -174,12 +174,19 @@ static void trace_row(void)
     fputc('\n', app.trace);
 }
 
+static void sink_stdout(void *ctx, uint32_t id, const char *bytes, size_t len);
+static void sink_pty(void *ctx, uint32_t id, const char *bytes, size_t len);
+
+/* Telemetry reports leave after the tick that made them, so they interleave
+ * with replies in time order; they are no collision (protocol.md 11.2:
+ * streaming is for point-to-point links). */
 static void run_ticks(uint64_t n)
 {
     uint64_t k;
     for (k = 0; k < n; k++) {
         daran_sim_bus_tick(&app.bus);
         trace_row();
+        (void)daran_sim_bus_collect(&app.bus, app.pty ? sink_pty : sink_stdout, NULL);
     }
 }
 

@@ -43,6 +43,9 @@ static const struct {
     {DARAN_PROP_ENABLE_STALL_LIMIT, {.u32 = 0u}},
     {DARAN_PROP_ENCODER_OFFSET_CALIBRATED, {.u32 = 1u}},
     {DARAN_PROP_GEAR_RATIO, {.f32 = 1.0f}},
+    /* telemetry (protocol.md 11.2): off, position and velocity when on */
+    {DARAN_PROP_TELEMETRY_PERIOD, {.f32 = 0.0f}},
+    {DARAN_PROP_TELEMETRY_FIELDS, {.u32 = 3u}},
     {DARAN_PROP_STALL_CURRENT_LIMIT, {.f32 = 20.0f}},
     {DARAN_PROP_STALL_TIME_LIMIT, {.f32 = 2.0f}},
     {DARAN_PROP_STORED_TURNS_COUNTS, {.s32 = 0}},

@@ -233,6 +233,8 @@ static bool integer_in_range(daran_range_t range, int64_t x)
         return x == 1 || x == 2;
     case DARAN_RANGE_POLE_PAIRS:
         return x >= 1 && x <= 128;
+    case DARAN_RANGE_TELEMETRY:
+        return x >= 0 && x <= 511; /* every set fits the default DARAN_REPLY_MAX */
     case DARAN_RANGE_UART_BAUD:
     case DARAN_RANGE_CAN_BAUD:
     case DARAN_RANGE_AXIS_STATE:

@@ -192,10 +192,10 @@ static void test_property_list_is_sorted_by_the_path_a_host_writes(void)
     }
 }
 
-static void test_property_list_and_ids_have_163_rows(void)
+static void test_property_list_and_ids_have_165_rows(void)
 {
-    TEST_ASSERT_EQUAL_INT64(163, sizeof sorted_rows / sizeof sorted_rows[0]);
-    TEST_ASSERT_EQUAL_INT64(163, DARAN_PROP_COUNT);
+    TEST_ASSERT_EQUAL_INT64(165, sizeof sorted_rows / sizeof sorted_rows[0]);
+    TEST_ASSERT_EQUAL_INT64(165, DARAN_PROP_COUNT);
 }
 
 static void test_value_union_holds_every_type_in_64_bits(void)
@@ -241,7 +241,7 @@ int main(void)
     RUN_TEST(test_result_phrase_of_an_unknown_value_is_motor_fault);
     RUN_TEST(test_no_result_phrase_contains_a_digit);
     RUN_TEST(test_property_list_is_sorted_by_the_path_a_host_writes);
-    RUN_TEST(test_property_list_and_ids_have_163_rows);
+    RUN_TEST(test_property_list_and_ids_have_165_rows);
     RUN_TEST(test_value_union_holds_every_type_in_64_bits);
     RUN_TEST(test_property_paths_are_printable_and_fit_a_line);
     RUN_TEST(test_drive_size_is_a_compile_time_constant);

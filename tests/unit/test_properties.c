@@ -61,8 +61,9 @@ static void test_the_property_list_has_every_spec_property(void)
 {
     TEST_ASSERT_EQUAL_INT64(DARAN_PROP_COUNT, N_ROWS);
     /* spec 10.2: the vendor's 159 paths, serial_number, config.enable_watchdog,
-     * config.watchdog_timeout and config_warnings (D32) */
-    TEST_ASSERT_EQUAL_INT64(163, N_ROWS);
+     * config.watchdog_timeout and config_warnings (D32), and the two telemetry
+     * settings (spec 11.2) */
+    TEST_ASSERT_EQUAL_INT64(165, N_ROWS);
     for (size_t i = 0; i < N_ROWS; i++) {
         TEST_ASSERT_EQUAL_INT64((daran_prop_t)i, rows[i].id);
     }
@@ -329,6 +330,7 @@ static const char *write_sample(const prop_row_t *p)
     case DARAN_RANGE_DIRECTION: return "-1";
     case DARAN_RANGE_MOTOR_TYPE: return "2";
     case DARAN_RANGE_POLE_PAIRS: return "21";
+    case DARAN_RANGE_TELEMETRY: return "259";
     case DARAN_RANGE_COUNT: break;
     }
     TEST_FAIL_MESSAGE_F("%s: no write sample for range %d", p->name, (int)p->range);
@@ -485,6 +487,9 @@ static const edge_t edges_direction[] = {{"-1", true}, {"1", true}, {"0", false}
                                          {"-2", false}, {"4294967295", false}, {NULL, false}};
 static const edge_t edges_pole_pairs[] = {{"1", true}, {"128", true}, {"0", false},
                                           {"129", false}, {"-1", false}, {NULL, false}};
+/* every field set fits a reply of the default DARAN_REPLY_MAX */
+static const edge_t edges_telemetry[] = {{"0", true}, {"511", true}, {"512", false},
+                                         {"-1", false}, {NULL, false}};
 
 static const edge_t *edges_for(const prop_row_t *p)
 {
@@ -509,6 +514,7 @@ static const edge_t *edges_for(const prop_row_t *p)
     case DARAN_RANGE_DIRECTION: return edges_direction;
     case DARAN_RANGE_MOTOR_TYPE: return edges_motor_type;
     case DARAN_RANGE_POLE_PAIRS: return edges_pole_pairs;
+    case DARAN_RANGE_TELEMETRY: return edges_telemetry;
     case DARAN_RANGE_COUNT: break;
     }
     TEST_FAIL_MESSAGE_F("%s: no edges for range %d", p->name, (int)p->range);

@@ -1,0 +1,113 @@
+/* `h id properties [prefix]`: every property the drive knows, one line each
+ * in path order, from the same table that lookup and range checks use (so
+ * it cannot drift from them), then `end` (protocol.md 11.1). */
+#include "internal.h"
+
+#if DARAN_ENABLE_HELP
+
+static const char type_names[] = "f32\0u32\0s32\0u64\0bool";
+
+/* " <range>" as `w` checks it; nothing when any value of the type goes. */
+static void reply_range(daran_drive_t *drive, daran_property_t row)
+{
+    daran_range_t range = DARAN_PROPERTY_RANGE(row);
+    const daran_range_rule_t *rule = &daran_range_rules[range];
+    if (DARAN_PROPERTY_ACCESS(row) != DARAN_ACCESS_RW) {
+        return;
+    }
+    if (range == DARAN_RANGE_BOOL || DARAN_PROPERTY_TYPE(row) == DARAN_TYPE_BOOL) {
+        daran_reply_text(drive, " 0|1", 4);
+        return;
+    }
+    if (rule->kind == DARAN_RULE_SET) {
+        daran_reply_text(drive, " {", 2);
+        for (uint8_t i = 0; i < rule->set_len; i++) {
+            int32_t v = daran_range_sets[rule->low + i];
+            if (i > 0u) {
+                daran_reply_text(drive, ",", 1);
+            }
+            if (v < 0) {
+                daran_reply_text(drive, "-", 1);
+            }
+            daran_reply_u64(drive, (uint64_t)(v < 0 ? -(int64_t)v : (int64_t)v));
+        }
+        daran_reply_text(drive, "}", 1);
+        return;
+    }
+    /* intervals: open ends read as a sign condition */
+    if (rule->high == INT32_MAX && rule->low == INT32_MIN) {
+        return;
+    }
+    if (rule->high == INT32_MAX) {
+        daran_reply_text(drive, rule->low > 0 ? " >0" : " >=0", rule->low > 0 ? 3u : 4u);
+        return;
+    }
+    if (rule->low == INT32_MIN) {
+        daran_reply_text(drive, " <=0", 4);
+        return;
+    }
+    daran_reply_space(drive);
+    daran_reply_u64(drive, (uint64_t)rule->low); /* the bounded intervals are >= 0 */
+    if (rule->high != rule->low) {
+        daran_reply_text(drive, "..", 2);
+        daran_reply_u64(drive, (uint64_t)rule->high);
+    }
+}
+
+/* Does the line built so far (the path) start with the prefix? */
+static bool reply_starts_with(const daran_drive_t *drive, const daran_field_t *prefix)
+{
+    if (drive->reply_len < prefix->len) {
+        return false;
+    }
+    for (uint16_t i = 0; i < prefix->len; i++) {
+        if (drive->reply[i] != prefix->text[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *request)
+{
+    static const char properties[] = "properties";
+    daran_field_t what = daran_field_at(request, 2);
+    if (what.len != sizeof properties - 1u) {
+        return DARAN_ERR_INVALID_VALUE;
+    }
+    for (uint16_t i = 0; i < what.len; i++) {
+        if (what.text[i] != properties[i]) {
+            return DARAN_ERR_INVALID_VALUE;
+        }
+    }
+    daran_field_t prefix = {what.text, 0};
+    if (request->fields->count == 4u) {
+        prefix = daran_field_at(request, 3);
+    }
+    size_t cursor = 0;
+    for (daran_prop_t prop = daran_discovery_next(&cursor); prop != DARAN_PROP_COUNT;
+         prop = daran_discovery_next(&cursor)) {
+        daran_property_t row = daran_property_row(prop);
+        daran_reply_begin(drive);
+        daran_reply_path(drive, prop);
+        if (!reply_starts_with(drive, &prefix)) {
+            continue;
+        }
+        const char *type = type_names;
+        for (unsigned n = DARAN_PROPERTY_TYPE(row); n > 0u; n--) {
+            type += 4; /* every name but the last takes 3 letters and a NUL */
+        }
+        daran_reply_space(drive);
+        daran_reply_cstr(drive, type);
+        daran_reply_text(drive, DARAN_PROPERTY_ACCESS(row) == DARAN_ACCESS_RW ? " rw " : " ro ", 4);
+        daran_reply_cstr(drive, daran_unit_text(row));
+        reply_range(drive, row);
+        daran_reply_end(drive);
+    }
+    daran_reply_begin(drive);
+    daran_reply_text(drive, "end", 3);
+    daran_reply_end(drive);
+    return DARAN_OK;
+}
+
+#endif /* DARAN_ENABLE_HELP */

@@ -1,0 +1,151 @@
+/* The port's own commands: checking and keeping its table, finding a word
+ * in it, and what a handler uses (the field parsers the core's handlers use,
+ * and reply lines). */
+#include "internal.h"
+
+#include "daran_port.h"
+
+static bool is_lower_word(const char *word)
+{
+    size_t len = 0;
+    for (; word[len] != '\0'; len++) {
+        if (word[len] < 'a' || word[len] > 'z' || len == DARAN_PORT_WORD_MAX) {
+            return false;
+        }
+    }
+    return len > 0u;
+}
+
+static bool same_word(const char *a, const char *b)
+{
+    size_t i = 0;
+    for (; a[i] != '\0' && a[i] == b[i]; i++) {
+    }
+    return a[i] == b[i];
+}
+
+static size_t word_length(const char *word)
+{
+    size_t len = 0;
+    while (word[len] != '\0') {
+        len++;
+    }
+    return len;
+}
+
+daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_command_t *commands,
+                                       size_t count, void *ctx)
+{
+    if (drive == NULL || (commands == NULL && count != 0u) || count > 255u) {
+        return DARAN_ERR_BAD_ARGUMENT;
+    }
+    for (size_t i = 0; i < count; i++) {
+        const daran_port_command_t *c = &commands[i];
+        if (c->word == NULL || !is_lower_word(c->word) || c->handler == NULL || c->help == NULL ||
+            c->min_values > c->max_values || c->max_values > DARAN_FIELDS_MAX - 3u) {
+            return DARAN_ERR_BAD_ARGUMENT;
+        }
+        daran_field_t word = {c->word, (uint16_t)word_length(c->word)};
+        if (daran_find_command(&word) != NULL) {
+            return DARAN_ERR_BAD_ARGUMENT; /* a vendor word */
+        }
+        for (size_t j = 0; j < i; j++) {
+            if (same_word(c->word, commands[j].word)) {
+                return DARAN_ERR_BAD_ARGUMENT;
+            }
+        }
+    }
+    drive->port_commands = count != 0u ? commands : NULL;
+    drive->port_command_count = (uint8_t)count;
+    drive->port_ctx = ctx;
+    return DARAN_OK;
+}
+
+const daran_port_command_t *daran_find_port_command(const daran_drive_t *drive,
+                                                    const daran_field_t *word)
+{
+    if (word->len > DARAN_PORT_WORD_MAX) {
+        return NULL;
+    }
+    for (size_t i = 0; i < drive->port_command_count; i++) {
+        const char *w = drive->port_commands[i].word;
+        size_t k = 0;
+        /* command words are case-insensitive (spec 1); the table's are lower case */
+        while (k < word->len && w[k] != '\0' && (word->text[k] | 0x20) == w[k]) {
+            k++;
+        }
+        if (k == word->len && w[k] == '\0') {
+            return &drive->port_commands[i];
+        }
+    }
+    return NULL;
+}
+
+size_t daran_args_count(const daran_args_t *args)
+{
+    return (size_t)args->fields->count - 2u;
+}
+
+uint8_t daran_args_motor(const daran_args_t *args)
+{
+    return args->motor;
+}
+
+/* Value @p index after the id, or false past the last. */
+static bool value_field(const daran_args_t *args, size_t index, daran_field_t *field)
+{
+    if (index >= daran_args_count(args)) {
+        return false;
+    }
+    *field = daran_field_at(args, (unsigned)(2u + index));
+    return true;
+}
+
+daran_result_t daran_args_f32(const daran_args_t *args, size_t index, float *out)
+{
+    daran_field_t field;
+    return value_field(args, index, &field) ? daran_field_f32(&field, out)
+                                            : DARAN_ERR_INVALID_FORMAT;
+}
+
+daran_result_t daran_args_u32(const daran_args_t *args, size_t index, uint32_t *out)
+{
+    daran_field_t field;
+    uint64_t value;
+    if (!value_field(args, index, &field)) {
+        return DARAN_ERR_INVALID_FORMAT;
+    }
+    daran_result_t result = daran_parse_u64(field.text, field.len, &value);
+    if (result == DARAN_OK && value > UINT32_MAX) {
+        result = DARAN_ERR_OUT_OF_RANGE;
+    }
+    if (result == DARAN_OK) {
+        *out = (uint32_t)value;
+    }
+    return result;
+}
+
+daran_result_t daran_args_mode(const daran_args_t *args, size_t index, uint32_t allowed,
+                               uint32_t *out)
+{
+    daran_field_t field;
+    return value_field(args, index, &field) ? daran_field_mode(&field, allowed, out)
+                                            : DARAN_ERR_INVALID_FORMAT;
+}
+
+void daran_reply(daran_drive_t *drive, const char *payload, size_t len)
+{
+    daran_reply_begin(drive);
+    daran_reply_text(drive, payload, len);
+    daran_reply_end(drive);
+}
+
+size_t daran_format_float(float value, char *buf)
+{
+    return daran_format_f32(value, buf);
+}
+
+size_t daran_format_uint(uint64_t value, char *buf)
+{
+    return daran_format_u64(value, buf);
+}
