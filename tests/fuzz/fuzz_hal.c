@@ -1,6 +1,6 @@
 /* The recording HAL and reply checks shared by the fuzz harnesses (see
  * fuzz_hal.h). Written for the harnesses, independent of tests/unit's mock
- * (which needs cmocka), so the harnesses link only the core. */
+ * (which needs Unity), so the harnesses link only the core. */
 #include "fuzz_hal.h"
 
 #include <math.h>

@@ -27,5 +27,8 @@ foreach(h stream line number sim)
   endforeach()
 endforeach()
 
-daran_add_cmocka_test(test_hal_fault_injection ${_fz}/test_hal_fault_injection.c ${_fz}/fuzz_hal.c)
+# The only program here that links Unity: the harnesses and fuzz_hal.c need
+# nothing but the core.
+daran_add_unity_test(test_hal_fault_injection ${_fz}/test_hal_fault_injection.c ${_fz}/fuzz_hal.c)
 target_include_directories(test_hal_fault_injection PRIVATE ${_fz})
+target_link_libraries(test_hal_fault_injection PRIVATE m)

@@ -3,15 +3,27 @@
  * outside the protocol's errors answers `motor fault`) and leave it able to
  * run the next line: the failed line, sent again, works. Getters and
  * mutating calls (set, move, action) are failed separately. */
-#include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
-#include <cmocka.h>
+#include "unity.h"
 
 #include "fuzz_hal.h"
+
+/* Fail the current test at @p line with a formatted message (Unity 2.4.3
+ * has no TEST_PRINTF). */
+static void fail_at(int line, const char *fmt, ...)
+{
+    static char text[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    UNITY_TEST_FAIL((UNITY_LINE_TYPE)line, text);
+}
+#define FAIL_F(...) fail_at(__LINE__, __VA_ARGS__)
 
 /* Every line succeeds on a fresh drive with id 1 when nothing fails. */
 static const char *const session[] = {
@@ -66,7 +78,18 @@ typedef struct run {
     fuzz_hal_t hal;
 } run_t;
 
+/* The drive and its recording HAL; start() makes them fresh for each
+ * session, setUp() for each test. */
 static run_t run;
+
+void setUp(void)
+{
+    memset(&run, 0, sizeof run);
+}
+
+void tearDown(void)
+{
+}
 
 static char *with_checksum_fixed(const char *line, char *buf, size_t size)
 {
@@ -107,8 +130,8 @@ static uint32_t calls_in_clean_session(bool getters)
     for (size_t i = 0; i < SESSION_LEN; i++) {
         daran_result_t r = send(session[i]);
         if (r != DARAN_OK) {
-            fail_msg("clean session: \"%s\" answered %d: %.*s", session[i], (int)r,
-                     (int)run.hal.out_len, run.hal.out);
+            FAIL_F("clean session: \"%s\" answered %d: %.*s", session[i], (int)r,
+                   (int)run.hal.out_len, run.hal.out);
         }
         total += getters ? run.hal.n_get : fuzz_hal_mutations(&run.hal);
     }
@@ -132,8 +155,8 @@ static void check_session_with_failure(uint32_t nth, int result, bool getter)
         bool failed_here = getter ? run.hal.get_failed : run.hal.failed;
         if (!failed_here) {
             if (r != DARAN_OK) {
-                fail_msg("N=%u: \"%s\" failed (%d) without an injected failure", nth,
-                         session[i], (int)r);
+                FAIL_F("N=%u: \"%s\" failed (%d) without an injected failure", nth,
+                       session[i], (int)r);
             }
             continue;
         }
@@ -143,37 +166,36 @@ static void check_session_with_failure(uint32_t nth, int result, bool getter)
                          run.hal.failed_was_last;
         if (feed_only) {
             /* D22: a failed watchdog feed after an accepted move is not answered. */
-            assert_int_equal(r, DARAN_OK);
-            assert_int_equal(run.hal.n_replies, 0);
+            TEST_ASSERT_EQUAL_INT64(DARAN_OK, r);
+            TEST_ASSERT_EQUAL_INT64(0, run.hal.n_replies);
         } else {
             char expect[96];
             int n = snprintf(expect, sizeof expect, "error: %s", daran_result_phrase(want));
             if (r != want || run.hal.n_replies != 1u || run.hal.out_len < (size_t)n ||
                 memcmp(run.hal.out, expect, (size_t)n) != 0) {
-                fail_msg("N=%u result %d: \"%s\" answered %d \"%.*s\", want \"%s\"", nth, result,
-                         session[i], (int)r, (int)run.hal.out_len, run.hal.out, expect);
+                FAIL_F("N=%u result %d: \"%s\" answered %d \"%.*s\", want \"%s\"", nth, result,
+                       session[i], (int)r, (int)run.hal.out_len, run.hal.out, expect);
             }
             if (getter && fuzz_hal_mutations(&run.hal) != 0u) {
-                fail_msg("N=%u: a failed getter still let \"%s\" reach the HAL", nth, session[i]);
+                FAIL_F("N=%u: a failed getter still let \"%s\" reach the HAL", nth, session[i]);
             }
             /* Recovery: the same line again works (the injection fired once). */
             r = send(session[i]);
             if (r != DARAN_OK) {
-                fail_msg("N=%u: \"%s\" failed again after recovery (%d)", nth, session[i],
-                         (int)r);
+                FAIL_F("N=%u: \"%s\" failed again after recovery (%d)", nth, session[i],
+                       (int)r);
             }
         }
     }
     if (!seen) {
-        fail_msg("N=%u: the injection never fired", nth);
+        FAIL_F("N=%u: the injection never fired", nth);
     }
 }
 
-static void test_each_failing_hal_call_is_answered_and_the_line_works_again(void **state)
+static void test_each_failing_hal_call_is_answered_and_the_line_works_again(void)
 {
-    (void)state;
     uint32_t k = calls_in_clean_session(false);
-    assert_true(k >= 20u);
+    TEST_ASSERT_TRUE(k >= 20u);
     static const int results[] = {DARAN_ERR_MOTOR_FAULT, DARAN_ERR_OUT_OF_RANGE,
                                   DARAN_ERR_BAD_ARGUMENT, 99};
     for (size_t r = 0; r < sizeof results / sizeof results[0]; r++) {
@@ -183,11 +205,10 @@ static void test_each_failing_hal_call_is_answered_and_the_line_works_again(void
     }
 }
 
-static void test_each_failing_getter_is_answered_without_effect(void **state)
+static void test_each_failing_getter_is_answered_without_effect(void)
 {
-    (void)state;
     uint32_t k = calls_in_clean_session(true);
-    assert_true(k >= 20u);
+    TEST_ASSERT_TRUE(k >= 20u);
     for (uint32_t n = 1; n <= k; n++) {
         check_session_with_failure(n, DARAN_ERR_MOTOR_FAULT, true);
         check_session_with_failure(n, 1234, true);
@@ -196,9 +217,8 @@ static void test_each_failing_getter_is_answered_without_effect(void **state)
 
 int main(void)
 {
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_each_failing_hal_call_is_answered_and_the_line_works_again),
-        cmocka_unit_test(test_each_failing_getter_is_answered_without_effect),
-    };
-    return cmocka_run_group_tests_name("hal_fault_injection", tests, NULL, NULL);
+    UNITY_BEGIN();
+    RUN_TEST(test_each_failing_hal_call_is_answered_and_the_line_works_again);
+    RUN_TEST(test_each_failing_getter_is_answered_without_effect);
+    return UNITY_END();
 }

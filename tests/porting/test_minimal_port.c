@@ -1,13 +1,20 @@
 /* The minimal port of docs/porting.md does what the document says. */
-#include <setjmp.h>
-#include <stdarg.h>
+#include <stdbool.h>
 #include <stddef.h>
-#include <stdio.h>
+#include <stdint.h>
 #include <string.h>
 
-#include <cmocka.h>
+#include "unity.h"
 
 #include "minimal_hal.h"
+
+/* Every reply line ends in the configured line end: "\r\n" by default
+ * (DARAN_REPLY_CRLF, include/daran_config.h). */
+#if DARAN_REPLY_CRLF
+#define EOL "\r\n"
+#else
+#define EOL "\n"
+#endif
 
 typedef struct link {
     char replies[512];
@@ -17,12 +24,14 @@ typedef struct link {
 static void write_line(void *ctx, const char *line, size_t len)
 {
     link_t *link = ctx;
-    assert_true(link->len + len < sizeof link->replies);
+    TEST_ASSERT_TRUE(link->len + len < sizeof link->replies);
     memcpy(link->replies + link->len, line, len);
     link->len += len;
     link->replies[link->len] = '\0';
 }
 
+/* The port's drive, the core's instance bound to it and the UART's other
+ * end: fresh for every test (setUp()). */
 typedef struct fixture {
     minimal_drive_t axis;
     daran_drive_t drive;
@@ -31,95 +40,95 @@ typedef struct fixture {
 
 static fixture_t fixture;
 
-static int setup(void **state)
+void setUp(void)
 {
     memset(&fixture, 0, sizeof fixture);
     minimal_drive_init(&fixture.axis);
-    assert_int_equal(daran_init(&fixture.drive, &minimal_hal, &fixture.axis, write_line, &fixture.link),
-                     DARAN_OK);
-    *state = &fixture;
-    return 0;
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_init(&fixture.drive, &minimal_hal, &fixture.axis,
+                                                 write_line, &fixture.link));
 }
 
-/* What an interrupt would do byte by byte, then one pass of the main loop. */
-static const char *send(fixture_t *f, const char *text)
+void tearDown(void)
 {
-    f->link.len = 0;
-    f->link.replies[0] = '\0';
+}
+
+/* What an interrupt would do byte by byte, then one pass of the main loop;
+ * the replies. A macro so that a failure points at the test's line. */
+static const char *send_at(int line, const char *text)
+{
+    fixture.link.len = 0;
+    fixture.link.replies[0] = '\0';
     for (const char *c = text; *c != '\0'; c++) {
-        assert_true(daran_rx_byte(&f->drive, (uint8_t)*c));
+        UNITY_TEST_ASSERT(daran_rx_byte(&fixture.drive, (uint8_t)*c), line,
+                          "the receive ring refused a byte");
     }
-    (void)daran_poll(&f->drive);
-    return f->link.replies;
+    (void)daran_poll(&fixture.drive);
+    return fixture.link.replies;
 }
+#define SEND(text) send_at(__LINE__, (text))
 
-static void test_a_t_line_reaches_the_control_loop_mailbox(void **state)
+static void test_a_t_line_reaches_the_control_loop_mailbox(void)
 {
-    fixture_t *f = *state;
     daran_move_t move;
-    assert_string_equal(send(f, "t 1 10 0 25\n"), "");
-    assert_true(minimal_drive_take_move(&f->axis, &move));
-    assert_int_equal(move.kind, DARAN_MOVE_FILTERED_POSITION);
-    assert_true(move.pos_deg == 10.0f);
-    assert_true(move.rate == 25.0f);
-    assert_false(minimal_drive_take_move(&f->axis, &move));
+    TEST_ASSERT_EQUAL_STRING("", SEND("t 1 10 0 25\n"));
+    TEST_ASSERT_TRUE(minimal_drive_take_move(&fixture.axis, &move));
+    TEST_ASSERT_EQUAL_INT64(DARAN_MOVE_FILTERED_POSITION, move.kind);
+    TEST_ASSERT_TRUE(move.pos_deg == 10.0f);
+    TEST_ASSERT_TRUE(move.rate == 25.0f);
+    TEST_ASSERT_FALSE(minimal_drive_take_move(&fixture.axis, &move));
 }
 
-static void test_targets_read_back_at_once(void **state)
+static void test_targets_read_back_at_once(void)
 {
-    fixture_t *f = *state;
-    assert_string_equal(send(f, "p 1 12.25 5 0.3\n"), "");
-    assert_string_equal(send(f, "r axis1.output_shaft.input_pos\n"), "12.25\n");
-    assert_string_equal(send(f, "r axis1.output_shaft.input_torque\n"), "0.3\n");
+    TEST_ASSERT_EQUAL_STRING("", SEND("p 1 12.25 5 0.3\n"));
+    TEST_ASSERT_EQUAL_STRING("12.25" EOL, SEND("r axis1.output_shaft.input_pos\n"));
+    TEST_ASSERT_EQUAL_STRING("0.3" EOL, SEND("r axis1.output_shaft.input_torque\n"));
 }
 
-static void test_estop_blocks_motion_until_cleared_and_closed(void **state)
+static void test_estop_blocks_motion_until_cleared_and_closed(void)
 {
-    fixture_t *f = *state;
-    assert_string_equal(send(f, "st 1\n"), "");
-    assert_string_equal(send(f, "t 1 5\n"), "error: estop active\n");
-    assert_string_equal(send(f, "sc 1\n"), "");
-    assert_string_equal(send(f, "t 1 5\n"), "error: motor idle\n");
-    assert_string_equal(send(f, "w axis1.requested_state 8\n"), "");
-    assert_string_equal(send(f, "t 1 5\n"), "");
+    TEST_ASSERT_EQUAL_STRING("", SEND("st 1\n"));
+    TEST_ASSERT_EQUAL_STRING("error: estop active" EOL, SEND("t 1 5\n"));
+    TEST_ASSERT_EQUAL_STRING("", SEND("sc 1\n"));
+    TEST_ASSERT_EQUAL_STRING("error: motor idle" EOL, SEND("t 1 5\n"));
+    TEST_ASSERT_EQUAL_STRING("", SEND("w axis1.requested_state 8\n"));
+    TEST_ASSERT_EQUAL_STRING("", SEND("t 1 5\n"));
 }
 
-static void test_save_reaches_the_flash_driver(void **state)
+static void test_save_reaches_the_flash_driver(void)
 {
-    fixture_t *f = *state;
-    assert_string_equal(send(f, "ss 1*17\n"), "");
-    assert_int_equal(f->axis.saved_config_writes, 1);
+    TEST_ASSERT_EQUAL_STRING("", SEND("ss 1*17\n"));
+    TEST_ASSERT_EQUAL_INT64(1, fixture.axis.saved_config_writes);
 }
 
-static void test_queries_answer_from_the_property_store(void **state)
+static void test_queries_answer_from_the_property_store(void)
 {
-    fixture_t *f = *state;
-    assert_string_equal(send(f, "g 1\n"), "24 0\n");
-    assert_string_equal(send(f, "i 1\n"), "100 1 0\n");
-    assert_string_equal(send(f, "f 1 *87\n"), "0 0 *0\n");
+    TEST_ASSERT_EQUAL_STRING("24 0" EOL, SEND("g 1\n"));
+    TEST_ASSERT_EQUAL_STRING("100 1 0" EOL, SEND("i 1\n"));
+    /* a checksummed request gets a checksummed reply, the line end after it */
+    TEST_ASSERT_EQUAL_STRING("0 0 *0" EOL, SEND("f 1 *87\n"));
 }
 
-static void test_an_instance_of_another_size_is_refused(void **state)
+static void test_an_instance_of_another_size_is_refused(void)
 {
-    fixture_t *f = *state;
     /* What a caller compiled with other DARAN_* size options would pass. */
-    assert_int_equal(daran_init_sized(&f->drive, sizeof(daran_drive_t) - 4u, &minimal_hal, &f->axis,
-                                      write_line, &f->link),
-                     DARAN_ERR_BAD_ARGUMENT);
-    assert_int_equal(daran_init_sized(&f->drive, sizeof(daran_drive_t), &minimal_hal, &f->axis,
-                                      write_line, &f->link),
-                     DARAN_OK);
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT,
+                            daran_init_sized(&fixture.drive, sizeof(daran_drive_t) - 4u,
+                                             &minimal_hal, &fixture.axis, write_line,
+                                             &fixture.link));
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_init_sized(&fixture.drive, sizeof(daran_drive_t),
+                                                       &minimal_hal, &fixture.axis, write_line,
+                                                       &fixture.link));
 }
 
 int main(void)
 {
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup(test_a_t_line_reaches_the_control_loop_mailbox, setup),
-        cmocka_unit_test_setup(test_targets_read_back_at_once, setup),
-        cmocka_unit_test_setup(test_estop_blocks_motion_until_cleared_and_closed, setup),
-        cmocka_unit_test_setup(test_save_reaches_the_flash_driver, setup),
-        cmocka_unit_test_setup(test_queries_answer_from_the_property_store, setup),
-        cmocka_unit_test_setup(test_an_instance_of_another_size_is_refused, setup),
-    };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    UNITY_BEGIN();
+    RUN_TEST(test_a_t_line_reaches_the_control_loop_mailbox);
+    RUN_TEST(test_targets_read_back_at_once);
+    RUN_TEST(test_estop_blocks_motion_until_cleared_and_closed);
+    RUN_TEST(test_save_reaches_the_flash_driver);
+    RUN_TEST(test_queries_answer_from_the_property_store);
+    RUN_TEST(test_an_instance_of_another_size_is_refused);
+    return UNITY_END();
 }

@@ -3,106 +3,114 @@
  * error), the whole property table round trip, and a power cut at every byte
  * offset of a save or an erase never losing both configs nor loading
  * garbage. */
-#include <setjmp.h>
-#include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
-#include <cmocka.h>
+#include "sim_unity.h"
+#include "unity.h"
 
 #include "sim_drive.h"
 #include "sim_nvm.h"
 
+/* Blank RAM storage and a model with the default configuration, fresh for
+ * every test (setUp()). */
 static daran_sim_ram_storage_t ram;
 static daran_sim_storage_t st;
 static daran_sim_model_t m;
 
-static int setup(void **state)
+void setUp(void)
 {
-    (void)state;
+    memset(&ram, 0, sizeof ram);
+    memset(&st, 0, sizeof st);
     daran_sim_ram_storage_init(&ram, &st);
     daran_sim_model_init(&m, 1000u);
-    return 0;
 }
 
-static void save_with_gain(float gain)
+void tearDown(void)
+{
+}
+
+/* The UPPER-CASE helpers are macros so that a failure points at the test's
+ * line. */
+static void save_with_gain_at(int line, float gain)
 {
     m.cfg[DARAN_PROP_POS_GAIN].f32 = gain;
-    assert_true(daran_sim_nvm_save(&st, &m));
+    UNITY_TEST_ASSERT(daran_sim_nvm_save(&st, &m), line, "the save failed");
 }
+/* Save the model with pos_gain @p gain; the save must succeed. */
+#define SAVE_WITH_GAIN(gain) save_with_gain_at(__LINE__, (gain))
 
-static float loaded_gain(daran_sim_nvm_status_t expect)
+static float loaded_gain_at(int line, daran_sim_nvm_status_t expect)
 {
     daran_sim_model_t fresh;
     daran_sim_model_init(&fresh, 1000u);
-    assert_int_equal(daran_sim_nvm_load(&st, &fresh), expect);
+    UNITY_TEST_ASSERT_EQUAL_INT64(expect, daran_sim_nvm_load(&st, &fresh), line,
+                                  "the load's status");
     return fresh.cfg[DARAN_PROP_POS_GAIN].f32;
 }
+/* Boot a fresh model from the storage; the load must end in @p expect;
+ * the pos_gain it booted with. */
+#define LOADED_GAIN(expect) loaded_gain_at(__LINE__, (expect))
 
-static void test_crc32_is_the_ieee_one(void **state)
+static void test_crc32_is_the_ieee_one(void)
 {
-    (void)state;
-    assert_int_equal(daran_sim_crc32((const uint8_t *)"123456789", 9u, 0u), 0xCBF43926u);
+    TEST_ASSERT_EQUAL_INT64(0xCBF43926u, daran_sim_crc32((const uint8_t *)"123456789", 9u, 0u));
 }
 
-static void test_blank_memory_boots_with_defaults_and_no_flag(void **state)
+static void test_blank_memory_boots_with_defaults_and_no_flag(void)
 {
-    (void)state;
-    assert_true(loaded_gain(DARAN_SIM_NVM_BLANK) == 20.0f);
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_BLANK) == 20.0f);
 }
 
-static void test_saved_config_and_zero_offset_load_back(void **state)
+static void test_saved_config_and_zero_offset_load_back(void)
 {
     daran_sim_model_t fresh;
-    (void)state;
     m.cfg[DARAN_PROP_CAN_NODE_ID].u32 = 7u;
     m.cfg[DARAN_PROP_LOAD_INERTIA].f32 = 0.0125f;
     m.cfg[DARAN_PROP_ENABLE_WATCHDOG].u32 = 1u;
     m.zero_offset_deg = -12.5f;
-    save_with_gain(25.0f);
+    SAVE_WITH_GAIN(25.0f);
     daran_sim_model_init(&fresh, 1000u);
-    assert_int_equal(daran_sim_nvm_load(&st, &fresh), DARAN_SIM_NVM_LOADED);
-    assert_true(fresh.cfg[DARAN_PROP_POS_GAIN].f32 == 25.0f);
-    assert_int_equal(fresh.cfg[DARAN_PROP_CAN_NODE_ID].u32, 7u);
-    assert_true(fresh.cfg[DARAN_PROP_LOAD_INERTIA].f32 == 0.0125f);
-    assert_int_equal(fresh.cfg[DARAN_PROP_ENABLE_WATCHDOG].u32, 1u);
-    assert_true(fresh.zero_offset_deg == -12.5f);
+    TEST_ASSERT_EQUAL_INT64(DARAN_SIM_NVM_LOADED, daran_sim_nvm_load(&st, &fresh));
+    TEST_ASSERT_TRUE(fresh.cfg[DARAN_PROP_POS_GAIN].f32 == 25.0f);
+    TEST_ASSERT_EQUAL_INT64(7u, fresh.cfg[DARAN_PROP_CAN_NODE_ID].u32);
+    TEST_ASSERT_TRUE(fresh.cfg[DARAN_PROP_LOAD_INERTIA].f32 == 0.0125f);
+    TEST_ASSERT_EQUAL_INT64(1u, fresh.cfg[DARAN_PROP_ENABLE_WATCHDOG].u32);
+    TEST_ASSERT_TRUE(fresh.zero_offset_deg == -12.5f);
     /* the newest of several saves wins, whichever slot it is in */
-    save_with_gain(26.0f);
-    assert_true(loaded_gain(DARAN_SIM_NVM_LOADED) == 26.0f);
-    save_with_gain(27.0f);
-    assert_true(loaded_gain(DARAN_SIM_NVM_LOADED) == 27.0f);
+    SAVE_WITH_GAIN(26.0f);
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_LOADED) == 26.0f);
+    SAVE_WITH_GAIN(27.0f);
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_LOADED) == 27.0f);
 }
 
-static void test_erase_brings_defaults_back_at_next_boot(void **state)
+static void test_erase_brings_defaults_back_at_next_boot(void)
 {
-    (void)state;
-    save_with_gain(30.0f);
-    save_with_gain(31.0f);
-    assert_true(daran_sim_nvm_erase(&st));
-    assert_true(loaded_gain(DARAN_SIM_NVM_BLANK) == 20.0f);
+    SAVE_WITH_GAIN(30.0f);
+    SAVE_WITH_GAIN(31.0f);
+    TEST_ASSERT_TRUE(daran_sim_nvm_erase(&st));
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_BLANK) == 20.0f);
 }
 
 /* Cut the power after k bytes of a save, for every k: the next boot loads
  * the old config (k < size) or the new one (k = size), never defaults,
  * never a damaged image. Run from blank, one and two earlier saves so both
  * slots are written over. */
-static void test_power_cut_at_every_byte_of_a_save_keeps_old_or_new(void **state)
+static void test_power_cut_at_every_byte_of_a_save_keeps_old_or_new(void)
 {
     daran_sim_ram_storage_t before;
     uint32_t size = daran_sim_nvm_save_size();
     int history;
-    (void)state;
     for (history = 0; history < 3; history++) {
         uint32_t k;
         float old_gain = history == 0 ? 20.0f : 10.0f + (float)history;
         daran_sim_ram_storage_init(&ram, &st);
         if (history >= 1) {
-            save_with_gain(11.0f);
+            SAVE_WITH_GAIN(11.0f);
         }
         if (history >= 2) {
-            save_with_gain(12.0f);
+            SAVE_WITH_GAIN(12.0f);
         }
         before = ram;
         for (k = 0; k <= size; k++) {
@@ -110,27 +118,26 @@ static void test_power_cut_at_every_byte_of_a_save_keeps_old_or_new(void **state
             ram.power_cut = true;
             ram.cut_after = k;
             m.cfg[DARAN_PROP_POS_GAIN].f32 = 99.0f;
-            assert_int_equal(daran_sim_nvm_save(&st, &m), k == size);
+            TEST_ASSERT_EQUAL_INT64(k == size, daran_sim_nvm_save(&st, &m));
             ram.power_cut = false;
             if (k < size) {
-                assert_true(loaded_gain(history == 0 ? DARAN_SIM_NVM_BLANK
-                                                     : DARAN_SIM_NVM_LOADED) == old_gain);
+                TEST_ASSERT_TRUE(LOADED_GAIN(history == 0 ? DARAN_SIM_NVM_BLANK
+                                                          : DARAN_SIM_NVM_LOADED) == old_gain);
             } else {
-                assert_true(loaded_gain(DARAN_SIM_NVM_LOADED) == 99.0f);
+                TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_LOADED) == 99.0f);
             }
         }
     }
-    print_message("power cut checked at each of the %u bytes of a save, 3 histories\n", size);
+    NOTE("power cut checked at each of the %u bytes of a save, 3 histories", size);
 }
 
 /* Same for `se`: the stored config stays or is gone; nothing damaged. */
-static void test_power_cut_during_erase_never_leaves_damage(void **state)
+static void test_power_cut_during_erase_never_leaves_damage(void)
 {
     daran_sim_ram_storage_t before;
     uint32_t k;
-    (void)state;
-    save_with_gain(11.0f);
-    save_with_gain(12.0f);
+    SAVE_WITH_GAIN(11.0f);
+    SAVE_WITH_GAIN(12.0f);
     before = ram;
     for (k = 0; k <= 8u; k++) {
         daran_sim_model_t fresh;
@@ -138,92 +145,88 @@ static void test_power_cut_during_erase_never_leaves_damage(void **state)
         ram = before;
         ram.power_cut = true;
         ram.cut_after = k;
-        assert_int_equal(daran_sim_nvm_erase(&st), k == 8u);
+        TEST_ASSERT_EQUAL_INT64(k == 8u, daran_sim_nvm_erase(&st));
         ram.power_cut = false;
         daran_sim_model_init(&fresh, 1000u);
         s = daran_sim_nvm_load(&st, &fresh);
-        assert_int_not_equal(s, DARAN_SIM_NVM_DAMAGED);
+        TEST_ASSERT_NOT_EQUAL(DARAN_SIM_NVM_DAMAGED, s);
         if (s == DARAN_SIM_NVM_LOADED) {
-            assert_true(fresh.cfg[DARAN_PROP_POS_GAIN].f32 == 12.0f);
+            TEST_ASSERT_TRUE(fresh.cfg[DARAN_PROP_POS_GAIN].f32 == 12.0f);
         }
         /* the newest image goes only once its own magic starts to change */
-        assert_int_equal(s, k <= 4u ? DARAN_SIM_NVM_LOADED : DARAN_SIM_NVM_BLANK);
+        TEST_ASSERT_EQUAL_INT64(k <= 4u ? DARAN_SIM_NVM_LOADED : DARAN_SIM_NVM_BLANK, s);
     }
 }
 
-static void test_corrupted_memory_boots_defaults_with_a_warning_flag(void **state)
+static void test_corrupted_memory_boots_defaults_with_a_warning_flag(void)
 {
-    (void)state;
-    save_with_gain(33.0f);
-    assert_true(daran_sim_nvm_corrupt(&st));
-    assert_true(loaded_gain(DARAN_SIM_NVM_DAMAGED) == 20.0f);
+    SAVE_WITH_GAIN(33.0f);
+    TEST_ASSERT_TRUE(daran_sim_nvm_corrupt(&st));
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_DAMAGED) == 20.0f);
     /* one new save repairs it */
-    save_with_gain(34.0f);
-    assert_true(loaded_gain(DARAN_SIM_NVM_LOADED) == 34.0f);
-    save_with_gain(35.0f);
-    assert_true(loaded_gain(DARAN_SIM_NVM_LOADED) == 35.0f);
+    SAVE_WITH_GAIN(34.0f);
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_LOADED) == 34.0f);
+    SAVE_WITH_GAIN(35.0f);
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_LOADED) == 35.0f);
     /* corrupting blank memory damages both slots; one save repairs that too */
     daran_sim_ram_storage_init(&ram, &st);
-    assert_true(daran_sim_nvm_corrupt(&st));
-    assert_true(loaded_gain(DARAN_SIM_NVM_DAMAGED) == 20.0f);
-    save_with_gain(36.0f);
-    assert_true(loaded_gain(DARAN_SIM_NVM_LOADED) == 36.0f);
+    TEST_ASSERT_TRUE(daran_sim_nvm_corrupt(&st));
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_DAMAGED) == 20.0f);
+    SAVE_WITH_GAIN(36.0f);
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_LOADED) == 36.0f);
 }
 
-static void test_a_flipped_byte_anywhere_in_an_image_is_found(void **state)
+static void test_a_flipped_byte_anywhere_in_an_image_is_found(void)
 {
     uint32_t off;
     daran_sim_ram_storage_t before;
-    (void)state;
-    save_with_gain(40.0f);
+    SAVE_WITH_GAIN(40.0f);
     before = ram;
     for (off = 4u; off < daran_sim_nvm_save_size() - 4u; off++) {
         ram = before;
         ram.bytes[off] ^= 0x01u;
-        assert_true(loaded_gain(DARAN_SIM_NVM_DAMAGED) == 20.0f);
+        TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_DAMAGED) == 20.0f);
     }
 }
 
 /* At drive level: the flag is a warning, motion still works. */
-static void test_drive_with_corrupt_memory_moves_and_reports_the_flag(void **state)
+static void test_drive_with_corrupt_memory_moves_and_reports_the_flag(void)
 {
     static daran_sim_drive_t d;
     daran_move_t mv = {DARAN_MOVE_PASSTHROUGH, 0u, 10.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
     int k;
-    (void)state;
     daran_sim_drive_init(&d, 1u, 1000u);
-    assert_int_equal(daran_sim_drive_id(&d), 2u);
+    TEST_ASSERT_EQUAL_INT64(2u, daran_sim_drive_id(&d));
     d.model.cfg[DARAN_PROP_CAN_NODE_ID].u32 = 9u;
-    assert_true(daran_sim_nvm_save(&d.storage, &d.model));
+    TEST_ASSERT_TRUE(daran_sim_nvm_save(&d.storage, &d.model));
     daran_sim_drive_power_on(&d);
-    assert_int_equal(daran_sim_drive_id(&d), 9u);
-    assert_true(daran_sim_drive_corrupt_nvm(&d));
+    TEST_ASSERT_EQUAL_INT64(9u, daran_sim_drive_id(&d));
+    TEST_ASSERT_TRUE(daran_sim_drive_corrupt_nvm(&d));
     daran_sim_drive_power_on(&d);
-    assert_int_equal(daran_sim_drive_id(&d), 2u); /* default id again */
-    assert_int_equal(d.model.error, 0u);
-    assert_int_equal(d.model.config_warnings, DARAN_WARNING_NVM_CORRUPT);
-    assert_int_equal(d.model.state, DARAN_STATE_CLOSED_LOOP);
-    assert_int_equal(daran_sim_model_move(&d.model, &mv), DARAN_OK);
+    TEST_ASSERT_EQUAL_INT64(2u, daran_sim_drive_id(&d)); /* default id again */
+    TEST_ASSERT_EQUAL_INT64(0u, d.model.error);
+    TEST_ASSERT_EQUAL_INT64(DARAN_WARNING_NVM_CORRUPT, d.model.config_warnings);
+    TEST_ASSERT_EQUAL_INT64(DARAN_STATE_CLOSED_LOOP, d.model.state);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_sim_model_move(&d.model, &mv));
     for (k = 0; k < 1000; k++) {
         daran_sim_model_tick(&d.model);
     }
-    assert_float_equal(daran_sim_model_pos_deg(&d.model), 10.0f, 0.01f);
+    TEST_ASSERT_FLOAT_WITHIN(0.01f, 10.0f, daran_sim_model_pos_deg(&d.model));
     /* corrupting blank memory is found at boot too */
     daran_sim_ram_storage_init(&d.ram, &d.storage);
-    assert_true(daran_sim_drive_corrupt_nvm(&d));
+    TEST_ASSERT_TRUE(daran_sim_drive_corrupt_nvm(&d));
     daran_sim_drive_power_on(&d);
-    assert_int_equal(d.model.error, 0u);
-    assert_int_equal(d.model.config_warnings, DARAN_WARNING_NVM_CORRUPT);
+    TEST_ASSERT_EQUAL_INT64(0u, d.model.error);
+    TEST_ASSERT_EQUAL_INT64(DARAN_WARNING_NVM_CORRUPT, d.model.config_warnings);
 }
 
 /* The vendor's whole table is configuration too: s32 values (direction -1,
  * pole pairs, cpr), the gear ratio, the trajectory limits and mode, the
  * under-voltage trip level survive a save and a power cycle, and so does a
  * value written through a rotor-side view. */
-static void test_settings_of_the_whole_table_survive_a_save(void **state)
+static void test_settings_of_the_whole_table_survive_a_save(void)
 {
     static daran_sim_drive_t d;
-    (void)state;
     daran_sim_drive_init(&d, 0u, 1000u);
     d.model.cfg[DARAN_PROP_MOTOR_DIRECTION].s32 = -1;
     d.model.cfg[DARAN_PROP_POLE_PAIRS].s32 = 21;
@@ -241,50 +244,49 @@ static void test_settings_of_the_whole_table_survive_a_save(void **state)
         daran_value_t v;
         v.u64 = 0u;
         v.f32 = 0.02f; /* rotor Nm/A: 0.16 Nm/A at the shaft */
-        assert_int_equal(daran_sim_hal.set(&d, DARAN_PROP_MOTOR_TORQUE_CONSTANT, v), DARAN_OK);
+        TEST_ASSERT_EQUAL_INT64(DARAN_OK,
+                                daran_sim_hal.set(&d, DARAN_PROP_MOTOR_TORQUE_CONSTANT, v));
     }
-    assert_true(daran_sim_nvm_save(&d.storage, &d.model));
+    TEST_ASSERT_TRUE(daran_sim_nvm_save(&d.storage, &d.model));
     daran_sim_model_default_config(&d.model);
     daran_sim_drive_power_on(&d);
-    assert_int_equal(d.nvm_status, DARAN_SIM_NVM_LOADED);
-    assert_int_equal(d.model.cfg[DARAN_PROP_MOTOR_DIRECTION].s32, -1);
-    assert_int_equal(d.model.cfg[DARAN_PROP_POLE_PAIRS].s32, 21);
-    assert_int_equal(d.model.cfg[DARAN_PROP_ENCODER_CPR].s32, 4096);
-    assert_int_equal(d.model.cfg[DARAN_PROP_STORED_TURNS_COUNTS].s32, -123456);
-    assert_true(d.model.cfg[DARAN_PROP_GEAR_RATIO].f32 == 8.0f);
-    assert_int_equal(d.model.cfg[DARAN_PROP_TRAJ_MODE].u32, 2u);
-    assert_true(d.model.cfg[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 == 45.0f);
-    assert_true(d.model.cfg[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 == 0.0f);
-    assert_true(d.model.cfg[DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT].f32 == 90.0f);
-    assert_true(d.model.cfg[DARAN_PROP_DC_BUS_UNDERVOLTAGE_TRIP_LEVEL].f32 == 11.5f);
-    assert_int_equal(d.model.cfg[DARAN_PROP_ENABLE_STALL_LIMIT].u32, 1u);
-    assert_int_equal(d.model.cfg[DARAN_PROP_CAN_HEARTBEAT_MS].u32, 100u);
-    assert_true(d.model.cfg[DARAN_PROP_TORQUE_CONSTANT].f32 == 0.16f);
+    TEST_ASSERT_EQUAL_INT64(DARAN_SIM_NVM_LOADED, d.nvm_status);
+    TEST_ASSERT_EQUAL_INT64(-1, d.model.cfg[DARAN_PROP_MOTOR_DIRECTION].s32);
+    TEST_ASSERT_EQUAL_INT64(21, d.model.cfg[DARAN_PROP_POLE_PAIRS].s32);
+    TEST_ASSERT_EQUAL_INT64(4096, d.model.cfg[DARAN_PROP_ENCODER_CPR].s32);
+    TEST_ASSERT_EQUAL_INT64(-123456, d.model.cfg[DARAN_PROP_STORED_TURNS_COUNTS].s32);
+    TEST_ASSERT_TRUE(d.model.cfg[DARAN_PROP_GEAR_RATIO].f32 == 8.0f);
+    TEST_ASSERT_EQUAL_INT64(2u, d.model.cfg[DARAN_PROP_TRAJ_MODE].u32);
+    TEST_ASSERT_TRUE(d.model.cfg[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 == 45.0f);
+    TEST_ASSERT_TRUE(d.model.cfg[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 == 0.0f);
+    TEST_ASSERT_TRUE(d.model.cfg[DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT].f32 == 90.0f);
+    TEST_ASSERT_TRUE(d.model.cfg[DARAN_PROP_DC_BUS_UNDERVOLTAGE_TRIP_LEVEL].f32 == 11.5f);
+    TEST_ASSERT_EQUAL_INT64(1u, d.model.cfg[DARAN_PROP_ENABLE_STALL_LIMIT].u32);
+    TEST_ASSERT_EQUAL_INT64(100u, d.model.cfg[DARAN_PROP_CAN_HEARTBEAT_MS].u32);
+    TEST_ASSERT_TRUE(d.model.cfg[DARAN_PROP_TORQUE_CONSTANT].f32 == 0.16f);
 }
 
 /* An image with a valid CRC but a setting the model divides by at 0 (not
  * something a save of a range-checked drive writes) is damage: defaults. */
-static void test_an_image_with_a_zero_gear_ratio_is_damage(void **state)
+static void test_an_image_with_a_zero_gear_ratio_is_damage(void)
 {
-    (void)state;
     m.cfg[DARAN_PROP_GEAR_RATIO].f32 = 0.0f;
-    save_with_gain(41.0f);
-    assert_true(loaded_gain(DARAN_SIM_NVM_DAMAGED) == 20.0f);
+    SAVE_WITH_GAIN(41.0f);
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_DAMAGED) == 20.0f);
     m.cfg[DARAN_PROP_GEAR_RATIO].f32 = 1.0f;
     m.cfg[DARAN_PROP_ENCODER_CPR].s32 = -5;
-    save_with_gain(42.0f);
-    assert_true(loaded_gain(DARAN_SIM_NVM_DAMAGED) == 20.0f);
+    SAVE_WITH_GAIN(42.0f);
+    TEST_ASSERT_TRUE(LOADED_GAIN(DARAN_SIM_NVM_DAMAGED) == 20.0f);
 }
 
 /* An image of format version 1 (before the whole table) reads as corrupt:
  * defaults and the warning, never a misread. */
-static void test_an_image_of_the_previous_version_is_a_warning_not_a_misread(void **state)
+static void test_an_image_of_the_previous_version_is_a_warning_not_a_misread(void)
 {
     static daran_sim_drive_t d;
-    (void)state;
     daran_sim_drive_init(&d, 0u, 1000u);
     d.model.cfg[DARAN_PROP_POS_GAIN].f32 = 44.0f;
-    assert_true(daran_sim_nvm_save(&d.storage, &d.model));
+    TEST_ASSERT_TRUE(daran_sim_nvm_save(&d.storage, &d.model));
     /* the version field of the committed slot (slot 0, bytes 4..5), CRC
      * made to match as a version-1 firmware would have written it */
     d.ram.bytes[4] = 1u;
@@ -298,27 +300,26 @@ static void test_an_image_of_the_previous_version_is_a_warning_not_a_misread(voi
         d.ram.bytes[15] = (uint8_t)(crc >> 24);
     }
     daran_sim_drive_power_on(&d);
-    assert_int_equal(d.nvm_status, DARAN_SIM_NVM_DAMAGED);
-    assert_true(d.model.cfg[DARAN_PROP_POS_GAIN].f32 == 20.0f);
-    assert_int_equal(d.model.config_warnings, DARAN_WARNING_NVM_CORRUPT);
-    assert_int_equal(d.model.error, 0u);
+    TEST_ASSERT_EQUAL_INT64(DARAN_SIM_NVM_DAMAGED, d.nvm_status);
+    TEST_ASSERT_TRUE(d.model.cfg[DARAN_PROP_POS_GAIN].f32 == 20.0f);
+    TEST_ASSERT_EQUAL_INT64(DARAN_WARNING_NVM_CORRUPT, d.model.config_warnings);
+    TEST_ASSERT_EQUAL_INT64(0u, d.model.error);
 }
 
 int main(void)
 {
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup(test_crc32_is_the_ieee_one, setup),
-        cmocka_unit_test_setup(test_blank_memory_boots_with_defaults_and_no_flag, setup),
-        cmocka_unit_test_setup(test_saved_config_and_zero_offset_load_back, setup),
-        cmocka_unit_test_setup(test_erase_brings_defaults_back_at_next_boot, setup),
-        cmocka_unit_test_setup(test_power_cut_at_every_byte_of_a_save_keeps_old_or_new, setup),
-        cmocka_unit_test_setup(test_power_cut_during_erase_never_leaves_damage, setup),
-        cmocka_unit_test_setup(test_corrupted_memory_boots_defaults_with_a_warning_flag, setup),
-        cmocka_unit_test_setup(test_a_flipped_byte_anywhere_in_an_image_is_found, setup),
-        cmocka_unit_test_setup(test_drive_with_corrupt_memory_moves_and_reports_the_flag, setup),
-        cmocka_unit_test_setup(test_settings_of_the_whole_table_survive_a_save, setup),
-        cmocka_unit_test_setup(test_an_image_with_a_zero_gear_ratio_is_damage, setup),
-        cmocka_unit_test_setup(test_an_image_of_the_previous_version_is_a_warning_not_a_misread, setup),
-    };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    UNITY_BEGIN();
+    RUN_TEST(test_crc32_is_the_ieee_one);
+    RUN_TEST(test_blank_memory_boots_with_defaults_and_no_flag);
+    RUN_TEST(test_saved_config_and_zero_offset_load_back);
+    RUN_TEST(test_erase_brings_defaults_back_at_next_boot);
+    RUN_TEST(test_power_cut_at_every_byte_of_a_save_keeps_old_or_new);
+    RUN_TEST(test_power_cut_during_erase_never_leaves_damage);
+    RUN_TEST(test_corrupted_memory_boots_defaults_with_a_warning_flag);
+    RUN_TEST(test_a_flipped_byte_anywhere_in_an_image_is_found);
+    RUN_TEST(test_drive_with_corrupt_memory_moves_and_reports_the_flag);
+    RUN_TEST(test_settings_of_the_whole_table_survive_a_save);
+    RUN_TEST(test_an_image_with_a_zero_gear_ratio_is_damage);
+    RUN_TEST(test_an_image_of_the_previous_version_is_a_warning_not_a_misread);
+    return UNITY_END();
 }

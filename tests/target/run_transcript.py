@@ -14,7 +14,8 @@ firmware takes off the line before the core sees it:
   !advance S        -> !t N   (N = S x tick rate, rounded half away from
                                zero like daran-sim's llround)
   !power-cycle [ID] -> !p ID
-  !fault ID KIND    -> !f ID o|u|n
+  !fault ID KIND    -> !f ID o|u|s|v|n  (overtemp, undervoltage, stall,
+                               overspeed, nvm-corrupt)
   !load ID NM       -> !l ID <float32 bits in hex>
   !# ...            -> (comment, dropped)
 
@@ -86,7 +87,8 @@ def translate(data, tick_hz):
         elif cmd == "power-cycle" and len(args) <= 1:
             out += b"!p %d\n" % int(args[0] if args else "0")
         elif cmd == "fault" and len(args) == 2:
-            kind = {"overtemp": b"o", "undervoltage": b"u", "nvm-corrupt": b"n"}.get(args[1])
+            kind = {"overtemp": b"o", "undervoltage": b"u", "stall": b"s", "overspeed": b"v",
+                    "nvm-corrupt": b"n"}.get(args[1])
             if kind is None:
                 return None
             out += b"!f %d %s\n" % (int(args[0]), kind)
