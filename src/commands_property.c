@@ -8,33 +8,6 @@ daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request)
     return daran_reply_properties(drive, &request->prop, 1);
 }
 
-static bool float_in_range(const daran_range_rule_t *rule, float value)
-{
-    switch (rule->float_sign) {
-    case -1:
-        return value <= 0.0f;
-    case 1:
-        return value >= 0.0f;
-    case 2:
-        return value > 0.0f;
-    default:
-        return true;
-    }
-}
-
-static bool integer_in_range(const daran_range_rule_t *rule, int64_t value)
-{
-    if (rule->kind == DARAN_RULE_INTERVAL) {
-        return value >= rule->low && value <= rule->high;
-    }
-    for (uint8_t i = 0; i < rule->set_len; i++) {
-        if (value == daran_range_sets[rule->low + i]) {
-            return true;
-        }
-    }
-    return false;
-}
-
 /* An integer field of a property of @p type: the value, or why not. A
  * u64 takes the whole unsigned range and no range rule (serial numbers are
  * read-only); s32 takes a sign. */
@@ -58,11 +31,12 @@ static daran_result_t parse_value(daran_property_t row, const daran_field_t *fie
                                   daran_value_t *value)
 {
     daran_range_t range = DARAN_PROPERTY_RANGE(row);
-    const daran_range_rule_t *rule = &daran_range_rules[range];
     daran_prop_type_t type = DARAN_PROPERTY_TYPE(row);
     if (type == DARAN_TYPE_F32) {
         daran_result_t result = daran_field_f32(field, &value->f32);
-        if (result == DARAN_OK && !float_in_range(rule, value->f32)) {
+        /* float ranges are sign conditions: test the sign, -0 counting as 0 (D27) */
+        int64_t sign = value->f32 > 0.0f ? 1 : (value->f32 < 0.0f ? -1 : 0);
+        if (result == DARAN_OK && !daran_range_holds(range, sign)) {
             result = DARAN_ERR_OUT_OF_RANGE;
         }
         return result;
@@ -82,9 +56,7 @@ static daran_result_t parse_value(daran_property_t row, const daran_field_t *fie
         return DARAN_ERR_OUT_OF_RANGE;
     }
     int64_t signed_value = negative ? -(int64_t)magnitude : (int64_t)magnitude;
-    bool unbounded_u32 = type != DARAN_TYPE_S32 && rule->kind == DARAN_RULE_INTERVAL &&
-                         rule->high == INT32_MAX && signed_value >= rule->low;
-    if (!unbounded_u32 && !integer_in_range(rule, signed_value)) {
+    if (!daran_range_holds(range, signed_value)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
     if (range == DARAN_RANGE_TELEMETRY && !daran_telemetry_fits((uint32_t)magnitude)) {

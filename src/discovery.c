@@ -7,50 +7,14 @@
 
 static const char type_names[] = "f32\0u32\0s32\0u64\0bool";
 
-/* " <range>" as `w` checks it; nothing when any value of the type goes. */
+/* " <range>" as `w` checks it (the same text); nothing for a read-only
+ * property or when any value of the type goes. */
 static void reply_range(daran_drive_t *drive, daran_property_t row)
 {
-    daran_range_t range = DARAN_PROPERTY_RANGE(row);
-    const daran_range_rule_t *rule = &daran_range_rules[range];
-    if (DARAN_PROPERTY_ACCESS(row) != DARAN_ACCESS_RW) {
-        return;
-    }
-    if (range == DARAN_RANGE_BOOL || DARAN_PROPERTY_TYPE(row) == DARAN_TYPE_BOOL) {
-        daran_reply_text(drive, " 0|1", 4);
-        return;
-    }
-    if (rule->kind == DARAN_RULE_SET) {
-        daran_reply_text(drive, " {", 2);
-        for (uint8_t i = 0; i < rule->set_len; i++) {
-            int32_t v = daran_range_sets[rule->low + i];
-            if (i > 0u) {
-                daran_reply_text(drive, ",", 1);
-            }
-            if (v < 0) {
-                daran_reply_text(drive, "-", 1);
-            }
-            daran_reply_u64(drive, (uint64_t)(v < 0 ? -(int64_t)v : (int64_t)v));
-        }
-        daran_reply_text(drive, "}", 1);
-        return;
-    }
-    /* intervals: open ends read as a sign condition */
-    if (rule->high == INT32_MAX && rule->low == INT32_MIN) {
-        return;
-    }
-    if (rule->high == INT32_MAX) {
-        daran_reply_text(drive, rule->low > 0 ? " >0" : " >=0", rule->low > 0 ? 3u : 4u);
-        return;
-    }
-    if (rule->low == INT32_MIN) {
-        daran_reply_text(drive, " <=0", 4);
-        return;
-    }
-    daran_reply_space(drive);
-    daran_reply_u64(drive, (uint64_t)rule->low); /* the bounded intervals are >= 0 */
-    if (rule->high != rule->low) {
-        daran_reply_text(drive, "..", 2);
-        daran_reply_u64(drive, (uint64_t)rule->high);
+    const char *text = daran_range_text(DARAN_PROPERTY_RANGE(row));
+    if (DARAN_PROPERTY_ACCESS(row) == DARAN_ACCESS_RW && *text != '\0') {
+        daran_reply_space(drive);
+        daran_reply_cstr(drive, text);
     }
 }
 

@@ -126,20 +126,11 @@ daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *re
 /* property_table.c */
 daran_property_t daran_property_row(daran_prop_t prop);
 
-/* A range as data: an interval [low, high] or a set of values
- * (daran_range_sets[low], set_len of them), and what it means for a
- * float32 (float_sign: -1 <= 0, 0 any, 1 >= 0, 2 > 0). One row per
- * daran_range_t: `w` checks with it, discovery prints it. */
-enum { DARAN_RULE_INTERVAL, DARAN_RULE_SET };
-typedef struct daran_range_rule {
-    uint8_t kind;
-    uint8_t set_len;
-    int8_t float_sign;
-    int32_t low;
-    int32_t high;
-} daran_range_rule_t;
-extern const daran_range_rule_t daran_range_rules[DARAN_RANGE_COUNT];
-extern const int32_t daran_range_sets[];
+/* A range as the text discovery prints (">=0", "1..63", "{9600,...}",
+ * "0|1", "" for none), and whether an integer, or a float's sign, is within
+ * it: `w` checks with the very text discovery shows. */
+const char *daran_range_text(daran_range_t range);
+bool daran_range_holds(daran_range_t range, int64_t value);
 
 /* Discovery: every property this build knows, in path order: start with
  * *cursor 0; DARAN_PROP_COUNT after the last. */

@@ -12,43 +12,104 @@
     (uint16_t)((type) | (access) << 3 | (scope) << 4 | (range) << 5 | (unit) << 10)
 #include "property_index.h"
 
+/* The packed tables' entries (see the generated header for the layout). */
+static unsigned word_end(unsigned n)
+{
+    return word_end_low[n] | (((unsigned)word_end_high[n >> 2] >> ((n & 3u) * 2u)) & 3u) << 8;
+}
+
+static unsigned word_start(unsigned number)
+{
+    return number > 1u ? word_end(number - 2u) : 0u;
+}
+
+static char word_char(size_t i)
+{
+    size_t bit = i * 5u;
+    unsigned pair = (unsigned)word_text[bit >> 3] | (unsigned)word_text[(bit >> 3) + 1u] << 8;
+    return DARAN_WORD_ALPHABET[(pair >> (bit & 7u)) & 0x1Fu];
+}
+
+static unsigned path_start(unsigned prop)
+{
+    return path_start_low[prop] | (unsigned)(path_info[prop] >> 6) << 8;
+}
+
 daran_property_t daran_property_row(daran_prop_t prop)
 {
     return property_attr[prop];
 }
 
-const int32_t daran_range_sets[] = {
-    9600, 19200, 38400, 57600, 115200, /* 0: UART_BAUD */
-    125000, 250000, 500000, 1000000,   /* 5: CAN_BAUD */
-    (int32_t)DARAN_STATE_IDLE, (int32_t)DARAN_STATE_CLOSED_LOOP, /* 9: AXIS_STATE */
-    1, 2, 3, 5, 6, 9,                  /* 11: INPUT_MODE */
-    -1, 1,                             /* 17: DIRECTION */
-    0, 2, 3,                           /* 19: MOTOR_TYPE */
-};
+/* Every range as the text discovery prints, which is also what `w` checks
+ * (daran_range_holds reads it): one source for both. NUL-separated, in
+ * daran_range_t order. */
+#define DARAN_STR_(x) #x
+#define DARAN_STR(x) DARAN_STR_(x)
+static const char range_text[] =
+    "\0"                                   /* NONE: any value of the type */
+    ">=0\0" ">0\0" "<=0\0" "0|1\0" "0\0" /* NON_NEGATIVE POSITIVE NON_POSITIVE BOOL ZERO */
+    "1.." DARAN_STR(DARAN_MOTOR_ID_MAX) "\0"
+    "{9600,19200,38400,57600,115200}\0"
+    "{125000,250000,500000,1000000}\0"
+    "0..1\0" "{1,8}\0" "1..3\0" "{1,2,3,5,6,9}\0" "1..2\0" /* CAN_PROTOCOL .. TRAJ_MODE */
+    "{-1,1}\0" "{0,2,3}\0" "1..128\0" "0..511";              /* DIRECTION .. TELEMETRY */
 
-#define ANY_INT {DARAN_RULE_INTERVAL, 0, 0, INT32_MIN, INT32_MAX}
-#define INTERVAL(low, high) {DARAN_RULE_INTERVAL, 0, 0, low, high}
-#define SET(first, count) {DARAN_RULE_SET, count, 0, first, 0}
-const daran_range_rule_t daran_range_rules[DARAN_RANGE_COUNT] = {
-    [DARAN_RANGE_NONE] = ANY_INT,
-    [DARAN_RANGE_NON_NEGATIVE] = {DARAN_RULE_INTERVAL, 0, 1, 0, INT32_MAX},
-    [DARAN_RANGE_POSITIVE] = {DARAN_RULE_INTERVAL, 0, 2, 1, INT32_MAX},
-    [DARAN_RANGE_NON_POSITIVE] = {DARAN_RULE_INTERVAL, 0, -1, INT32_MIN, 0},
-    [DARAN_RANGE_BOOL] = INTERVAL(0, 1),
-    [DARAN_RANGE_ZERO] = INTERVAL(0, 0),
-    [DARAN_RANGE_NODE_ID] = INTERVAL(1, DARAN_MOTOR_ID_MAX),
-    [DARAN_RANGE_UART_BAUD] = SET(0, 5),
-    [DARAN_RANGE_CAN_BAUD] = SET(5, 4),
-    [DARAN_RANGE_CAN_PROTOCOL] = INTERVAL(0, 1),
-    [DARAN_RANGE_AXIS_STATE] = SET(9, 2),
-    [DARAN_RANGE_CONTROL_MODE] = INTERVAL(1, 3),
-    [DARAN_RANGE_INPUT_MODE] = SET(11, 6),
-    [DARAN_RANGE_TRAJ_MODE] = INTERVAL(1, 2),
-    [DARAN_RANGE_DIRECTION] = SET(17, 2),
-    [DARAN_RANGE_MOTOR_TYPE] = SET(19, 3),
-    [DARAN_RANGE_POLE_PAIRS] = INTERVAL(1, 128),
-    [DARAN_RANGE_TELEMETRY] = INTERVAL(0, 511),
-};
+const char *daran_range_text(daran_range_t range)
+{
+    const char *text = range_text;
+    for (unsigned n = (unsigned)range; n > 0u; n--) {
+        while (*text != '\0') {
+            text++;
+        }
+        text++;
+    }
+    return text;
+}
+
+/* A decimal integer at *p, optionally negative; moves *p past it. */
+static int64_t read_integer(const char **p)
+{
+    const char *t = *p;
+    bool negative = *t == '-';
+    int64_t v = 0;
+    t += negative ? 1 : 0;
+    while (*t >= '0' && *t <= '9') {
+        v = v * 10 + (*t++ - '0');
+    }
+    *p = t;
+    return negative ? -v : v;
+}
+
+bool daran_range_holds(daran_range_t range, int64_t value)
+{
+    const char *t = daran_range_text(range);
+    switch (*t) {
+    case '\0':
+        return true;
+    case '>':
+        return t[1] == '=' ? value >= 0 : value > 0;
+    case '<':
+        return value <= 0;
+    default:
+        break;
+    }
+    /* "a..b", or a list "a|b", "{a,b,...}", "a" */
+    t += *t == '{' ? 1 : 0;
+    for (;;) {
+        int64_t low = read_integer(&t);
+        if (t[0] == '.' && t[1] == '.') {
+            t += 2;
+            return value >= low && value <= read_integer(&t);
+        }
+        if (value == low) {
+            return true;
+        }
+        if (*t != ',' && *t != '|') {
+            return false;
+        }
+        t++;
+    }
+}
 
 daran_prop_t daran_discovery_next(size_t *cursor)
 {
@@ -56,7 +117,7 @@ daran_prop_t daran_discovery_next(size_t *cursor)
     /* id order is path order; rows left out of the build have no path */
     while (*cursor < DARAN_PROP_COUNT) {
         size_t id = (*cursor)++;
-        if (path_start[id] != path_start[id + 1u]) {
+        if (path_start((unsigned)id) != path_start((unsigned)id + 1u)) {
             return (daran_prop_t)id;
         }
     }
@@ -72,15 +133,18 @@ void daran_reply_path(daran_drive_t *drive, daran_prop_t prop)
     if (DARAN_PROPERTY_SCOPE(property_attr[prop]) == DARAN_SCOPE_AXIS) {
         daran_reply_text(drive, "axis0.", 6);
     }
-    unsigned dots = path_dots[prop];
-    for (size_t k = path_start[prop]; k < path_start[prop + 1u]; k++) {
-        if (k > path_start[prop]) {
+    unsigned dots = path_info[prop];
+    unsigned end = path_start(prop + 1u);
+    for (unsigned k = path_start(prop); k < end; k++) {
+        if (k > path_start(prop)) {
             daran_reply_text(drive, (dots & 1u) != 0u ? "." : "_", 1);
             dots >>= 1;
         }
         unsigned n = path_words[k];
-        size_t start = n > 1u ? word_end[n - 2u] : 0u;
-        daran_reply_text(drive, word_text + start, word_end[n - 1u] - start);
+        for (size_t i = word_start(n); i < word_end(n - 1u); i++) {
+            char c = word_char(i);
+            daran_reply_text(drive, &c, 1);
+        }
     }
 }
 
@@ -102,27 +166,27 @@ const char *daran_unit_text(daran_property_t row)
  * followed by the separator its bit says. */
 static bool path_is(daran_prop_t prop, const char *name, size_t len)
 {
-    const uint8_t *word = path_words + path_start[prop];
-    const uint8_t *end = path_words + path_start[prop + 1u];
-    unsigned dots = path_dots[prop];
+    unsigned k = path_start(prop);
+    unsigned end = path_start(prop + 1u);
+    unsigned dots = path_info[prop];
     size_t at = 0;
-    if (word == end) {
+    if (k == end) {
         return false; /* left out of this build */
     }
     for (;;) {
-        unsigned n = *word++;
-        size_t start = n > 1u ? word_end[n - 2u] : 0u;
-        size_t word_len = (size_t)word_end[n - 1u] - start;
+        unsigned n = path_words[k++];
+        size_t start = word_start(n);
+        size_t word_len = word_end(n - 1u) - start;
         if (len - at < word_len) {
             return false;
         }
         for (size_t i = 0; i < word_len; i++) {
-            if (name[at + i] != word_text[start + i]) {
+            if (name[at + i] != word_char(start + i)) {
                 return false;
             }
         }
         at += word_len;
-        if (word == end) {
+        if (k == end) {
             return at == len;
         }
         if (at == len || name[at] != ((dots & 1u) != 0u ? '.' : '_')) {

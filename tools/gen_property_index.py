@@ -26,7 +26,7 @@ import sys
 
 FNV_PRIME = 16777619
 MASK32 = 0xFFFFFFFF
-MAX_WORDS = 8  # separators fit one byte
+MAX_WORDS = 7  # six separator bits and two bits of the path start share a byte
 ROW_RE = re.compile(r'X\(\s*(\w+)\s*,\s*"([^"]*)"\s*,\s*(SYSTEM|AXIS)\s*,\s*(\w+)\s*,\s*(RO|RW)\s*,\s*(\w+)\s*,\s*"([^"]*)"\s*\)')
 
 
@@ -123,6 +123,17 @@ def generate(rows, omit):
         sys.exit("gen_property_index: --omit names unknown properties: " + " ".join(unknown))
     if len(set(ids)) != len(ids):
         sys.exit("gen_property_index: a property id appears twice")
+    float_ranges = {"NONE", "NON_NEGATIVE", "POSITIVE", "NON_POSITIVE"}
+    for ident, path, scope, typ, access, rng, unit in rows:
+        # what src/commands_property.c can check for each type
+        if typ == "F32" and rng not in float_ranges:
+            sys.exit("gen_property_index: %s is f32: its range must be one of %s" % (ident, sorted(float_ranges)))
+        if typ == "BOOL" and rng != "BOOL":
+            sys.exit("gen_property_index: %s is bool: its range must be BOOL" % ident)
+        if typ == "U64" and access == "RW" and rng != "NONE":
+            sys.exit("gen_property_index: %s is a writable u64: it takes no range" % ident)
+        if len(("axis0." if scope == "AXIS" else "") + path) > 64:
+            sys.exit("gen_property_index: %s: paths are 64 characters at most (discovery lines fit a reply)" % ident)
     kept = [i for i, r in enumerate(rows) if r[0] not in omit]
     seen = set()
     for i in kept:
@@ -173,22 +184,51 @@ def generate(rows, omit):
     out.append("#define DARAN_HASH_EMPTY 0x%xu" % empty)
     out.append("typedef %s daran_hash_slot_t;" % slot_type)
     out.append("")
-    out.append("/* Every word once, sorted, without terminators: */")
     text = "".join(words)
-    out.append("static const char word_text[%d] =" % len(text))
-    for k in range(0, len(words), 10):
-        out.append("    " + c_string("".join(words[k:k + 10])))
-    out[-1] += ";"
+    alphabet = "".join(sorted(set(text), key=lambda c: c.encode()))
+    if len(alphabet) > 32:
+        sys.exit("gen_property_index: words use %d characters; 5 bits hold 32" % len(alphabet))
+    if len(text) > 1023:
+        sys.exit("gen_property_index: %d characters of words; 10 bits hold 1023" % len(text))
+    out.append("/* Every word once, sorted, without terminators, 5 bits a character")
+    out.append(" * (code n is DARAN_WORD_ALPHABET[n]), least significant bits first: */")
+    for k in range(0, len(words), 12):
+        out.append("/*   " + " ".join(words[k:k + 12]) + " */")
+    out.append("#define DARAN_WORD_ALPHABET " + c_string(alphabet))
+    bits = 0
+    nbits = 0
+    packed = []
+    for ch in text:
+        bits |= alphabet.index(ch) << nbits
+        nbits += 5
+        while nbits >= 8:
+            packed.append(bits & 0xFF)
+            bits >>= 8
+            nbits -= 8
+    packed.append(bits & 0xFF)
+    packed.append(0)  # a character is read as two bytes
+    out.append("static const uint8_t word_text[%d] = {" % len(packed))
+    for k in range(0, len(packed), 16):
+        out.append("    " + ", ".join("0x%02x" % b for b in packed[k:k + 16]) + ",")
+    out.append("};")
     out.append("")
-    out.append("/* Where word n (1-based) ends in word_text; it starts where n-1 ends. */")
     ends = []
     pos = 0
     for w in words:
         pos += len(w)
         ends.append(pos)
-    out.append("static const uint16_t word_end[DARAN_WORD_COUNT] = {")
-    for k in range(0, len(ends), 12):
-        out.append("    " + ", ".join(str(e) for e in ends[k:k + 12]) + ",")
+    out.append("/* Where word n (1-based) ends in word_text (it starts where n-1 ends):")
+    out.append(" * the low 8 bits, and the high 2 of four words a byte. */")
+    out.append("static const uint8_t word_end_low[DARAN_WORD_COUNT] = {")
+    for k in range(0, len(ends), 16):
+        out.append("    " + ", ".join(str(e & 0xFF) for e in ends[k:k + 16]) + ",")
+    out.append("};")
+    highs = [0] * ((len(ends) + 3) // 4)
+    for k, e in enumerate(ends):
+        highs[k // 4] |= (e >> 8) << (2 * (k % 4))
+    out.append("static const uint8_t word_end_high[%d] = {" % len(highs))
+    for k in range(0, len(highs), 16):
+        out.append("    " + ", ".join(str(b) for b in highs[k:k + 16]) + ",")
     out.append("};")
     out.append("")
     refs = []
@@ -202,20 +242,25 @@ def generate(rows, omit):
         else:
             dots.append(0)
     starts.append(len(refs))
-    out.append("/* Each property's path as word numbers: property p's are")
-    out.append(" * path_words[path_start[p] .. path_start[p + 1]) (none: left out of this build). */")
+    dots.append(0)
+    if len(refs) > 1023:
+        sys.exit("gen_property_index: %d word references; 10 bits hold 1023" % len(refs))
+    out.append("/* Each property's path as word numbers: property p's are from")
+    out.append(" * path_start(p) up to path_start(p + 1) (none: left out of this build). */")
     out.append("static const uint8_t path_words[%d] = {" % max(1, len(refs)))
     for k in range(0, len(refs), 20):
         out.append("    " + ", ".join(str(x) for x in refs[k:k + 20]) + ",")
     out.append("};")
-    out.append("static const uint16_t path_start[DARAN_PROP_COUNT + 1u] = {")
+    out.append("/* path_start(p): the low 8 bits here, the high 2 in path_info's top bits. */")
+    out.append("static const uint8_t path_start_low[DARAN_PROP_COUNT + 1u] = {")
     for k in range(0, len(starts), 16):
-        out.append("    " + ", ".join(str(x) for x in starts[k:k + 16]) + ",")
+        out.append("    " + ", ".join(str(x & 0xFF) for x in starts[k:k + 16]) + ",")
     out.append("};")
-    out.append("/* Bit k set: the separator after word k is '.', else '_'. */")
-    out.append("static const uint8_t path_dots[DARAN_PROP_COUNT] = {")
-    for k in range(0, len(dots), 16):
-        out.append("    " + ", ".join(str(x) for x in dots[k:k + 16]) + ",")
+    out.append("/* Bit k (k < 6) set: the separator after word k is '.', else '_'. */")
+    out.append("static const uint8_t path_info[DARAN_PROP_COUNT + 1u] = {")
+    info = [d | (st >> 8) << 6 for d, st in zip(dots, starts)]
+    for k in range(0, len(info), 16):
+        out.append("    " + ", ".join(str(x) for x in info[k:k + 16]) + ",")
     out.append("};")
     out.append("")
     out.append("/* type, access, scope, range, unit of each property. */")
@@ -257,6 +302,7 @@ def generate(rows, omit):
     out.append("")
     out.append("#endif /* DARAN_PROPERTY_INDEX_H */")
     stats = {"rows": len(rows), "kept": len(kept), "words": len(words), "text": len(text), "refs": len(refs),
+             "alphabet": len(alphabet),
              "slots": slots, "buckets": 1 << bucket_bits, "seed": seed}
     return "\n".join(out) + "\n", stats
 
