@@ -2,19 +2,18 @@
  * HAL. `h` lives with the command table, whose text it prints. */
 #include "internal.h"
 
-daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *props,
-                                      size_t count)
+daran_result_t daran_append_properties(daran_drive_t *drive, const daran_prop_t *props,
+                                       size_t count)
 {
-    daran_value_t values[3];
+    daran_value_t values[DARAN_APPEND_MAX];
     for (size_t i = 0; i < count; i++) {
         daran_result_t result = daran_get(drive, props[i], &values[i]);
         if (result != DARAN_OK) {
             return result;
         }
     }
-    daran_reply_begin(drive);
     for (size_t i = 0; i < count; i++) {
-        if (i > 0u) {
+        if (drive->reply_len > 0u) {
             daran_reply_space(drive);
         }
         switch (DARAN_PROPERTY_TYPE(daran_property_row(props[i]))) {
@@ -37,8 +36,18 @@ daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *
             break;
         }
     }
-    daran_reply_end(drive);
     return DARAN_OK;
+}
+
+daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *props,
+                                      size_t count)
+{
+    daran_reply_begin(drive);
+    daran_result_t result = daran_append_properties(drive, props, count);
+    if (result == DARAN_OK) {
+        daran_reply_end(drive);
+    }
+    return result;
 }
 
 daran_result_t daran_cmd_f(daran_drive_t *drive, const daran_request_t *request)

@@ -208,8 +208,13 @@ daran_result_t daran_shape_check(daran_shape_t shape, const float *values, uint8
 daran_result_t daran_shape_move(daran_shape_t shape, const float *values, uint8_t count,
                                 daran_move_t *move);
 
-/* Read @p count properties and reply them on one line, separated by spaces,
- * each formatted by its type (`r`, `f`, `g`, `i`). */
+/* Read @p count (<= DARAN_APPEND_MAX) properties, then append them to the
+ * line being built, each formatted by its type and after a space unless the
+ * line is still empty; nothing is appended when a read fails. */
+#define DARAN_APPEND_MAX 9u
+daran_result_t daran_append_properties(daran_drive_t *drive, const daran_prop_t *props,
+                                       size_t count);
+/* The same as a whole reply line (`r`, `f`, `g`, `i`). */
 daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *props,
                                       size_t count);
 
