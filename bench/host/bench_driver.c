@@ -6,8 +6,16 @@
  *   bench_driver MODE [--trace] [--repeat N] (STREAM | --line TEXT)
  *   MODE: ours       daran_process_line() per line
  *         ours-poll  daran_rx_write() + daran_poll() per line (the byte path)
- *         baseline   baseline_process_line() per line
+ *         baseline   baseline_process_line() per line (the sscanf/printf yardstick)
+ *         handwritten handwritten_process_line() per line (the hand-written yardstick)
  *         none       everything but the parser: reading, splitting, looping
+ *         respell    no parsing: print the stream with every number the
+ *                    hand-written yardstick rounds differently from a
+ *                    correctly rounded strtof spelled as the float it gets
+ *                    (%.9g, which reads back exactly), and the checksum of
+ *                    such a line kept right (or kept wrong by as much);
+ *                    compare_traces.py --yardstick handwritten runs the core
+ *                    on it to tell rounding from other differences
  *
  * The stream is read and split before the first line is processed, so a
  * callgrind run limited to the parser's entry point counts the parser alone
@@ -19,6 +27,7 @@
 #include <string.h>
 
 #include "baseline.h"
+#include "handwritten.h"
 #include "bench_hal.h"
 #include "daran_drive.h"
 
@@ -92,9 +101,90 @@ static line_t *split_lines(char *text, size_t size, size_t *count)
     return lines;
 }
 
+/* Is the token a decimal of the protocol's grammar (no nan, inf, hex)? */
+static int decimal_token(const char *text, size_t len)
+{
+    for (size_t i = 0; i < len; i++) {
+        char c = text[i];
+        if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E')) {
+            return 0;
+        }
+    }
+    return len > 0;
+}
+
+static unsigned xor_of(const char *text, size_t len)
+{
+    unsigned x = 0;
+    for (size_t i = 0; i < len; i++) {
+        x ^= (unsigned char)text[i];
+    }
+    return x;
+}
+
+static void respell(const char *line, size_t len, FILE *out)
+{
+    char buf[1024];
+    size_t n = 0;
+    const char *star = memchr(line, '*', len);
+    size_t payload = star != NULL ? (size_t)(star - line) : len;
+    size_t i = 0;
+    int field = 0;
+    while (i < payload) {
+        if (line[i] == ' ' || line[i] == '\t' || line[i] == '\r') {
+            buf[n++] = line[i++];
+            continue;
+        }
+        size_t start = i;
+        while (i < payload && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') {
+            i++;
+        }
+        size_t tlen = i - start;
+        char token[256];
+        float mine, right;
+        int replaced = 0;
+        if (field > 0 && tlen < sizeof token && decimal_token(line + start, tlen)) {
+            memcpy(token, line + start, tlen);
+            token[tlen] = '\0';
+            char *end;
+            right = strtof(token, &end);
+            if (*end == '\0' && handwritten_parse_f32(token, tlen, &mine) == DARAN_OK &&
+                memcmp(&mine, &right, sizeof mine) != 0) {
+                n += (size_t)snprintf(buf + n, sizeof buf - n, "%.9g", (double)mine);
+                replaced = 1;
+            }
+        }
+        if (!replaced) {
+            memcpy(buf + n, line + start, tlen);
+            n += tlen;
+        }
+        field++;
+    }
+    if (star != NULL) {
+        /* a well-formed checksum field: keep it right, or wrong by as much */
+        const char *p = star + 1;
+        unsigned value = 0, digits = 0;
+        while (p < line + len && *p >= '0' && *p <= '9' && digits < 4) {
+            value = value * 10 + (unsigned)(*p++ - '0');
+            digits++;
+        }
+        if (digits >= 1 && digits <= 3 && value <= 255) {
+            value ^= xor_of(line, payload) ^ xor_of(buf, n);
+            n += (size_t)snprintf(buf + n, sizeof buf - n, "*%u", value);
+            memcpy(buf + n, p, (size_t)(line + len - p));
+            n += (size_t)(line + len - p);
+        } else {
+            memcpy(buf + n, star, len - payload);
+            n += len - payload;
+        }
+    }
+    fwrite(buf, 1, n, out);
+    fputc('\n', out);
+}
+
 static int usage(void)
 {
-    fprintf(stderr, "usage: bench_driver ours|ours-poll|baseline|none [--trace] [--repeat N] "
+    fprintf(stderr, "usage: bench_driver ours|ours-poll|baseline|handwritten|none|respell [--trace] [--repeat N] "
                     "(STREAM | --line TEXT)\n");
     return 2;
 }
@@ -137,16 +227,25 @@ int main(int argc, char **argv)
     size_t count;
     line_t *lines = split_lines(text, size, &count);
 
+    if (strcmp(mode, "respell") == 0) {
+        for (size_t i = 0; i < count; i++) {
+            respell(lines[i].text, lines[i].len, stdout);
+        }
+        return 0;
+    }
+
     unsigned long current = 0;
     sink_t sink = {trace ? stdout : NULL, 0, &current};
     bench_hal_state_t hal_state;
     bench_hal_reset(&hal_state, trace ? stdout : NULL);
     static daran_drive_t drive;
     static baseline_t baseline;
+    static handwritten_t handwritten;
     if (daran_init(&drive, &bench_hal, &hal_state, sink_write, &sink) != DARAN_OK) {
         return 2;
     }
     baseline_init(&baseline, &bench_hal, &hal_state, sink_write, &sink);
+    handwritten_init(&handwritten, &bench_hal, &hal_state, sink_write, &sink);
 
     unsigned long errors = 0;
     for (unsigned long r = 0; r < repeat; r++) {
@@ -157,6 +256,9 @@ int main(int argc, char **argv)
                 errors += daran_process_line(&drive, lines[i].text, lines[i].len) != DARAN_OK;
             } else if (strcmp(mode, "baseline") == 0) {
                 errors += baseline_process_line(&baseline, lines[i].text) != DARAN_OK;
+            } else if (strcmp(mode, "handwritten") == 0) {
+                errors += handwritten_process_line(&handwritten, lines[i].text, lines[i].len) !=
+                          DARAN_OK;
             } else if (strcmp(mode, "ours-poll") == 0) {
                 /* The line and its '\n' through the ring, in pieces the ring can hold. */
                 const char *p = lines[i].text;

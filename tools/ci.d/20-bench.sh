@@ -6,6 +6,8 @@
 #                                           +10% of bench/host/reference.txt
 #   bench_baseline_makes_the_same_hal_calls the baseline yardstick still agrees with
 #                                           daran-ascii on every recorded stream
+#   bench_handwritten_same_up_to_rounding   the hand-written yardstick agrees with it
+#                                           up to (proven, counted) float rounding
 # Installs valgrind when missing (without it the guard would only be skipped).
 # Budget: 2 minutes.
 set -uo pipefail
