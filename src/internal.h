@@ -135,6 +135,10 @@ bool daran_range_holds(daran_range_t range, int64_t value);
 /* Discovery: every property this build knows, in path order: start with
  * *cursor 0; DARAN_PROP_COUNT after the last. */
 daran_prop_t daran_discovery_next(size_t *cursor);
+/* Property @p prop's path (without `axisN.`) into out[0..DARAN_PATH_MAX);
+ * returns its length, 0 for a row left out of this build. */
+#define DARAN_PATH_MAX 64u
+size_t daran_property_path(daran_prop_t prop, char *out);
 /* Append property @p prop's path as a host writes it (`axis0.` for AXIS). */
 void daran_reply_path(daran_drive_t *drive, daran_prop_t prop);
 /* The unit text of a property, or "-" when it has none. */

@@ -5,32 +5,34 @@
 
 #include "daran_port.h"
 
-static bool is_lower_word(const char *word)
-{
-    size_t len = 0;
-    for (; word[len] != '\0'; len++) {
-        if (word[len] < 'a' || word[len] > 'z' || len == DARAN_PORT_WORD_MAX) {
-            return false;
-        }
-    }
-    return len > 0u;
-}
-
-static bool same_word(const char *a, const char *b)
-{
-    size_t i = 0;
-    for (; a[i] != '\0' && a[i] == b[i]; i++) {
-    }
-    return a[i] == b[i];
-}
-
+/* The length of a word of 1..DARAN_PORT_WORD_MAX lower-case letters, or 0. */
 static size_t word_length(const char *word)
 {
     size_t len = 0;
-    while (word[len] != '\0') {
-        len++;
+    while (word[len] >= 'a' && word[len] <= 'z') {
+        if (++len > DARAN_PORT_WORD_MAX) {
+            return 0;
+        }
     }
-    return len;
+    return word[len] == '\0' ? len : 0u;
+}
+
+/* The command of that word among commands[0..count), or NULL. */
+static const daran_port_command_t *find_in(const daran_port_command_t *commands, size_t count,
+                                           const daran_field_t *word)
+{
+    for (size_t i = 0; i < count; i++) {
+        const char *w = commands[i].word;
+        size_t k = 0;
+        /* command words are case-insensitive (spec 1); the table's are lower case */
+        while (k < word->len && w[k] != '\0' && (word->text[k] | 0x20) == w[k]) {
+            k++;
+        }
+        if (k == word->len && w[k] == '\0') {
+            return &commands[i];
+        }
+    }
+    return NULL;
 }
 
 daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_command_t *commands,
@@ -41,18 +43,15 @@ daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_co
     }
     for (size_t i = 0; i < count; i++) {
         const daran_port_command_t *c = &commands[i];
-        if (c->word == NULL || !is_lower_word(c->word) || c->handler == NULL || c->help == NULL ||
-            c->min_values > c->max_values || c->max_values > DARAN_FIELDS_MAX - 3u) {
+        daran_field_t word = {c->word, 0};
+        if (c->word != NULL) {
+            word.len = (uint16_t)word_length(c->word);
+        }
+        /* a word of lower-case letters, no vendor's, not twice */
+        if (word.len == 0u || c->handler == NULL || c->help == NULL ||
+            c->min_values > c->max_values || c->max_values > DARAN_FIELDS_MAX - 3u ||
+            daran_find_command(&word) != NULL || find_in(commands, i, &word) != NULL) {
             return DARAN_ERR_BAD_ARGUMENT;
-        }
-        daran_field_t word = {c->word, (uint16_t)word_length(c->word)};
-        if (daran_find_command(&word) != NULL) {
-            return DARAN_ERR_BAD_ARGUMENT; /* a vendor word */
-        }
-        for (size_t j = 0; j < i; j++) {
-            if (same_word(c->word, commands[j].word)) {
-                return DARAN_ERR_BAD_ARGUMENT;
-            }
         }
     }
     drive->port_commands = count != 0u ? commands : NULL;
@@ -64,21 +63,7 @@ daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_co
 const daran_port_command_t *daran_find_port_command(const daran_drive_t *drive,
                                                     const daran_field_t *word)
 {
-    if (word->len > DARAN_PORT_WORD_MAX) {
-        return NULL;
-    }
-    for (size_t i = 0; i < drive->port_command_count; i++) {
-        const char *w = drive->port_commands[i].word;
-        size_t k = 0;
-        /* command words are case-insensitive (spec 1); the table's are lower case */
-        while (k < word->len && w[k] != '\0' && (word->text[k] | 0x20) == w[k]) {
-            k++;
-        }
-        if (k == word->len && w[k] == '\0') {
-            return &drive->port_commands[i];
-        }
-    }
-    return NULL;
+    return find_in(drive->port_commands, drive->port_command_count, word);
 }
 
 size_t daran_args_count(const daran_args_t *args)

@@ -128,24 +128,31 @@ daran_prop_t daran_discovery_next(size_t *cursor)
 #endif
 }
 
-void daran_reply_path(daran_drive_t *drive, daran_prop_t prop)
+size_t daran_property_path(daran_prop_t prop, char *out)
 {
-    if (DARAN_PROPERTY_SCOPE(property_attr[prop]) == DARAN_SCOPE_AXIS) {
-        daran_reply_text(drive, "axis0.", 6);
-    }
     unsigned dots = path_info[prop];
     unsigned end = path_start(prop + 1u);
+    size_t len = 0;
     for (unsigned k = path_start(prop); k < end; k++) {
-        if (k > path_start(prop)) {
-            daran_reply_text(drive, (dots & 1u) != 0u ? "." : "_", 1);
+        if (len > 0u) {
+            out[len++] = (dots & 1u) != 0u ? '.' : '_';
             dots >>= 1;
         }
         unsigned n = path_words[k];
         for (size_t i = word_start(n); i < word_end(n - 1u); i++) {
-            char c = word_char(i);
-            daran_reply_text(drive, &c, 1);
+            out[len++] = word_char(i);
         }
     }
+    return len;
+}
+
+void daran_reply_path(daran_drive_t *drive, daran_prop_t prop)
+{
+    char path[DARAN_PATH_MAX];
+    if (DARAN_PROPERTY_SCOPE(property_attr[prop]) == DARAN_SCOPE_AXIS) {
+        daran_reply_text(drive, "axis0.", 6);
+    }
+    daran_reply_text(drive, path, daran_property_path(prop, path));
 }
 
 static const char unit_text[] = "-\0" DARAN_UNIT_TEXT;
@@ -162,39 +169,19 @@ const char *daran_unit_text(daran_property_t row)
     return unit;
 }
 
-/* Does name[0..len) spell property @p prop's path? Word by word, each
- * followed by the separator its bit says. */
+/* Does name[0..len) spell property @p prop's path? */
 static bool path_is(daran_prop_t prop, const char *name, size_t len)
 {
-    unsigned k = path_start(prop);
-    unsigned end = path_start(prop + 1u);
-    unsigned dots = path_info[prop];
-    size_t at = 0;
-    if (k == end) {
-        return false; /* left out of this build */
+    char path[DARAN_PATH_MAX];
+    if (daran_property_path(prop, path) != len) {
+        return false; /* a row left out of this build has no path at all */
     }
-    for (;;) {
-        unsigned n = path_words[k++];
-        size_t start = word_start(n);
-        size_t word_len = word_end(n - 1u) - start;
-        if (len - at < word_len) {
+    for (size_t i = 0; i < len; i++) {
+        if (path[i] != name[i]) {
             return false;
         }
-        for (size_t i = 0; i < word_len; i++) {
-            if (name[at + i] != word_char(start + i)) {
-                return false;
-            }
-        }
-        at += word_len;
-        if (k == end) {
-            return at == len;
-        }
-        if (at == len || name[at] != ((dots & 1u) != 0u ? '.' : '_')) {
-            return false;
-        }
-        dots >>= 1;
-        at++;
     }
+    return true;
 }
 
 daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t len,

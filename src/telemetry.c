@@ -21,6 +21,9 @@ bool daran_telemetry_fits(uint32_t fields)
      * characters and a space, the error register 10, the flag 1, then
      * " *255" and the line end */
     size_t width = 5u + DARAN_F32_TEXT_MAX + 5u + (DARAN_REPLY_CRLF ? 2u : 1u);
+    if (DARAN_REPLY_MAX >= width + 7u * (1u + DARAN_F32_TEXT_MAX) + 11u + 2u) {
+        return true; /* every field set fits: the default */
+    }
     for (unsigned bit = 0; bit < FIELD_COUNT; bit++) {
         if (((fields >> bit) & 1u) != 0u) {
             width += bit < 7u ? 1u + DARAN_F32_TEXT_MAX : (bit == 7u ? 11u : 2u);

@@ -79,36 +79,38 @@ def slot_of(h, displacement, slots):
 
 
 def build_hash(keys):
-    """keys: list of (scope, bytes). Returns seed, bucket bits, displacements, slot table."""
+    """keys: list of (scope, bytes). Returns seed, bucket bits, displacements,
+    slot table, slot count: a minimal perfect hash (as many slots as keys)
+    when one is found, else a little room is added."""
     n = len(keys)
-    slots = max(4, n + n // 4)
     bucket_bits = max(1, (max(1, n // 3)).bit_length())
     buckets = 1 << bucket_bits
-    for seed in range(1, 4096):
-        hashes = [fnv(seed, scope, data) for scope, data in keys]
-        groups = [[] for _ in range(buckets)]
-        for index, h in enumerate(hashes):
-            groups[h >> (32 - bucket_bits)].append(index)
-        order = sorted(range(buckets), key=lambda b: -len(groups[b]))
-        taken = [None] * slots
-        displacement = [0] * buckets
-        ok = True
-        for b in order:
-            members = groups[b]
-            if not members:
-                continue
-            for d in range(256):
-                wanted = [slot_of(hashes[i], d, slots) for i in members]
-                if len(set(wanted)) == len(wanted) and all(taken[s] is None for s in wanted):
-                    for i, s in zip(members, wanted):
-                        taken[s] = i
-                    displacement[b] = d
+    for slots in (max(1, n), n + n // 8, n + n // 4):
+        for seed in range(1, 1024):
+            hashes = [fnv(seed, scope, data) for scope, data in keys]
+            groups = [[] for _ in range(buckets)]
+            for index, h in enumerate(hashes):
+                groups[h >> (32 - bucket_bits)].append(index)
+            order = sorted(range(buckets), key=lambda b: -len(groups[b]))
+            taken = [None] * slots
+            displacement = [0] * buckets
+            ok = True
+            for b in order:
+                members = groups[b]
+                if not members:
+                    continue
+                for d in range(256):
+                    wanted = [slot_of(hashes[i], d, slots) for i in members]
+                    if len(set(wanted)) == len(wanted) and all(taken[s] is None for s in wanted):
+                        for i, s in zip(members, wanted):
+                            taken[s] = i
+                        displacement[b] = d
+                        break
+                else:
+                    ok = False
                     break
-            else:
-                ok = False
-                break
-        if ok:
-            return seed, bucket_bits, displacement, taken, slots
+            if ok:
+                return seed, bucket_bits, displacement, taken, slots
     sys.exit("gen_property_index: no perfect hash found")
 
 
@@ -132,8 +134,8 @@ def generate(rows, omit):
             sys.exit("gen_property_index: %s is bool: its range must be BOOL" % ident)
         if typ == "U64" and access == "RW" and rng != "NONE":
             sys.exit("gen_property_index: %s is a writable u64: it takes no range" % ident)
-        if len(("axis0." if scope == "AXIS" else "") + path) > 64:
-            sys.exit("gen_property_index: %s: paths are 64 characters at most (discovery lines fit a reply)" % ident)
+        if len(path) > 64:
+            sys.exit("gen_property_index: %s: paths are 64 characters at most (DARAN_PATH_MAX)" % ident)
     kept = [i for i, r in enumerate(rows) if r[0] not in omit]
     seen = set()
     for i in kept:
