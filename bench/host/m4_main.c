@@ -3,6 +3,7 @@
  *   BENCH_PARSER 0  no parser: the image every figure is measured against
  *   BENCH_PARSER 1  daran-ascii (rx ring + daran_poll)
  *   BENCH_PARSER 2  the baseline yardstick (line buffer + baseline_process_line)
+ *   BENCH_PARSER 3  the hand-written yardstick (line buffer + handwritten_process_line)
  * Never run: only linked, so the size of what each parser pulls in is known. */
 #include <stddef.h>
 #include <stdint.h>
@@ -13,6 +14,8 @@
 #include "daran_drive.h"
 #elif BENCH_PARSER == 2
 #include "baseline.h"
+#elif BENCH_PARSER == 3
+#include "handwritten.h"
 #endif
 
 #define UART_STATUS (*(volatile uint32_t *)0x40004000u)
@@ -66,6 +69,10 @@ static daran_drive_t drive;
 static baseline_t baseline;
 static char line[129];
 static size_t line_len;
+#elif BENCH_PARSER == 3
+static handwritten_t handwritten;
+static char line[129];
+static size_t line_len;
 #endif
 
 int main(void)
@@ -78,6 +85,8 @@ int main(void)
     }
 #elif BENCH_PARSER == 2
     baseline_init(&baseline, &hal, NULL, uart_write, NULL);
+#elif BENCH_PARSER == 3
+    handwritten_init(&handwritten, &hal, NULL, uart_write, NULL);
 #else
     (void)hal;
     (void)uart_write;
@@ -94,6 +103,13 @@ int main(void)
         if (byte == '\n') {
             line[line_len] = '\0';
             (void)baseline_process_line(&baseline, line);
+            line_len = 0;
+        } else if (line_len < sizeof line - 1) {
+            line[line_len++] = (char)byte;
+        }
+#elif BENCH_PARSER == 3
+        if (byte == '\n') {
+            (void)handwritten_process_line(&handwritten, line, line_len);
             line_len = 0;
         } else if (line_len < sizeof line - 1) {
             line[line_len++] = (char)byte;

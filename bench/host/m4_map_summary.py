@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Summarise the three Cortex-M4 images m4_size.sh links: flash (text + data)
+"""Summarise the Cortex-M4 images m4_size.sh links: flash (text + data)
 and RAM (data + bss) from arm-none-eabi-size, each minus the empty image,
 and the flash bytes each image takes from every input, read from its link
 map (only sections the link kept: --gc-sections leaves the rest in the map's
@@ -86,28 +86,30 @@ def by_origin(mapfile, members_by_archive=None):
 
 
 rows = {}
-for image in ("empty", "daran", "daran-nohelp", "baseline"):
+IMAGES = ("empty", "daran", "daran-nohelp", "baseline", "handwritten")
+for image in IMAGES:
     rows[image] = size(os.path.join(out, image + ".elf"))
 base_flash, base_ram = rows["empty"]
 print("| image | flash (text+data) | RAM (data+bss) | flash over empty | RAM over empty |")
 print("|---|---:|---:|---:|---:|")
-for image in ("empty", "daran", "daran-nohelp", "baseline"):
+for image in IMAGES:
     flash, ram = rows[image]
     print("| %s | %d | %d | %d | %d |" % (image, flash, ram, flash - base_flash, ram - base_ram))
 print()
 print("Flash bytes kept per input (core = src/, core-nohelp = src/ with DARAN_ENABLE_HELP=0, "
-      "baseline = bench/baseline/, main = m4_main.c):")
+      "baseline = bench/baseline/baseline.c, handwritten = bench/baseline/handwritten.c, "
+      "main = m4_main.c):")
 print()
 origins = set()
 parts = {}
 members = {}
-for image in ("empty", "daran", "daran-nohelp", "baseline"):
+for image in IMAGES:
     members[image] = {}
     parts[image] = by_origin(os.path.join(out, image + ".map"), members[image])
     origins |= set(parts[image])
-images = ("empty", "daran", "daran-nohelp", "baseline")
+images = IMAGES
 print("| input | " + " | ".join(images) + " |")
-print("|---|---:|---:|---:|---:|")
+print("|---|" + "---:|" * len(images))
 for origin in sorted(origins):
     print("| %s | %s |" % (origin, " | ".join(str(parts[i].get(origin, 0)) for i in images)))
 
@@ -133,6 +135,7 @@ except OSError:
     pass
 core_own, core_pulled = own_and_pulled("daran", "core")
 base_own, base_pulled = own_and_pulled("baseline", "baseline")
+hand_own, hand_pulled = own_and_pulled("handwritten", "handwritten")
 core_total = core_own + core_pulled
 nohelp_own, nohelp_pulled = own_and_pulled("daran-nohelp", "core-nohelp")
 print()
@@ -147,17 +150,19 @@ else:
         budget, "met" if core_total <= budget else "missed by %d bytes" % (core_total - budget))
 print(headline + " The core's objects (src/) take %d bytes and pull "
       "%d bytes from the libraries: %d in all (%s); the baseline's take %d and pull %d: %d in "
-      "all, %.1fx the core. Without the help text (DARAN_ENABLE_HELP=0) the core is %d in all. "
+      "all, %.1fx the core; the hand-written yardstick's take %d and pull %d: %d in all. "
+      "Without the help text (DARAN_ENABLE_HELP=0) the core is %d in all. "
       "Whole images over the empty one (trivial HAL and glue included): "
-      "%d (daran), %d (daran, no help text), %d (baseline)." % (
+      "%d (daran), %d (daran, no help text), %d (baseline), %d (hand-written)." % (
           core_own, core_pulled, core_total,
           "%d to spare" % (budget - core_total) if core_total <= budget else
           "%d over" % (core_total - budget),
           base_own, base_pulled, base_own + base_pulled, (base_own + base_pulled) / core_total,
+          hand_own, hand_pulled, hand_own + hand_pulled,
           nohelp_own + nohelp_pulled,
           rows["daran"][0] - base_flash, rows["daran-nohelp"][0] - base_flash,
-          rows["baseline"][0] - base_flash))
-for image in ("daran", "baseline"):
+          rows["baseline"][0] - base_flash, rows["handwritten"][0] - base_flash))
+for image in ("daran", "baseline", "handwritten"):
     print()
     print("Library members in the %s image beyond the empty one (flash bytes):" % image)
     print()

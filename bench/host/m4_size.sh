@@ -1,6 +1,6 @@
 #!/bin/sh
-# Flash and RAM on Cortex-M4F: daran-ascii against the baseline yardstick,
-# each linked into the minimal image of m4_main.c with newlib-nano and
+# Flash and RAM on Cortex-M4F: daran-ascii against the sscanf/printf
+# (baseline) and the hand-written yardsticks, each linked into the minimal image of m4_main.c with newlib-nano and
 # --gc-sections, minus the same image without a parser.
 #
 #   bench/host/m4_size.sh [OUT_DIR]      (default build/bench/m4)
@@ -47,9 +47,11 @@ python3 tools/gen_property_index.py --list include/daran_properties.h --omit "" 
 compile main-empty 0 bench/host/m4_main.c
 compile main-daran 1 bench/host/m4_main.c
 compile main-baseline 2 bench/host/m4_main.c
+compile main-handwritten 3 bench/host/m4_main.c
 # shellcheck disable=SC2086
 compile core 1 $core_sources
 compile baseline 2 bench/baseline/baseline.c
+compile handwritten 3 bench/baseline/handwritten.c
 # The same core without the `h` help strings (DARAN_ENABLE_HELP=0).
 all_cflags=$cflags
 cflags="$cflags -DDARAN_ENABLE_HELP=0"
@@ -62,6 +64,7 @@ link daran "" main-daran core
 link daran-nohelp "" main-daran core-nohelp
 # A firmware that scans and prints floats with newlib-nano must ask for it.
 link baseline "-u _printf_float -u _scanf_float" main-baseline baseline
+link handwritten "" main-handwritten handwritten
 
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 dirty=""
@@ -71,9 +74,9 @@ echo "\`$cflags\`, link \`$ldflags\` (+ \`-u _printf_float -u _scanf_float\` for
 echo
 python3 bench/host/m4_map_summary.py "$out"
 echo
-echo "\`arm-none-eabi-size\` of the four images:"
+echo "\`arm-none-eabi-size\` of the five images:"
 echo
 echo '```'
-(cd "$out" && arm-none-eabi-size empty.elf daran.elf daran-nohelp.elf baseline.elf)
+(cd "$out" && arm-none-eabi-size empty.elf daran.elf daran-nohelp.elf baseline.elf handwritten.elf)
 echo '```'
 
