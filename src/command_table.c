@@ -89,6 +89,22 @@ static const char help_text[] = DARAN_COMMANDS(HELP_LINE);
 
 /* `h id`: a line per command, the core's then the port's; `h id properties
  * [prefix]`: discovery (discovery.c). */
+/* One `h` line: "<word> id <arguments>" (r and w take no id there). */
+static void help_line(daran_drive_t *drive, const char *word, size_t len, bool id,
+                      const char *arguments)
+{
+    daran_reply_begin(drive);
+    daran_reply_text(drive, word, len);
+    if (id) {
+        daran_reply_text(drive, " id", 3);
+    }
+    if (*arguments != '\0') {
+        daran_reply_space(drive);
+        daran_reply_cstr(drive, arguments);
+    }
+    daran_reply_end(drive);
+}
+
 static daran_result_t command_h(daran_drive_t *drive, const daran_request_t *request)
 {
     if (request->fields->count > 2u) {
@@ -97,31 +113,19 @@ static daran_result_t command_h(daran_drive_t *drive, const daran_request_t *req
     const char *arguments = help_text;
     for (size_t i = 0; i < COMMAND_COUNT; i++) {
         const daran_command_t *command = &commands[i];
-        daran_reply_begin(drive);
-        daran_reply_text(drive, command->word, command->word[1] != '\0' ? 2u : 1u);
-        if ((command->flags & DARAN_CMD_PATH) == 0u) {
-            daran_reply_text(drive, " id", 3);
+        help_line(drive, command->word, command->word[1] != '\0' ? 2u : 1u,
+                  (command->flags & DARAN_CMD_PATH) == 0u, arguments);
+        while (*arguments++ != '\0') {
         }
-        if (*arguments != '\0') {
-            daran_reply_space(drive);
-            daran_reply_cstr(drive, arguments);
-        }
-        daran_reply_end(drive);
-        while (*arguments != '\0') {
-            arguments++;
-        }
-        arguments++;
     }
     for (size_t i = 0; i < drive->port_command_count; i++) {
         const daran_port_command_t *command = &drive->port_commands[i];
-        daran_reply_begin(drive);
-        daran_reply_cstr(drive, command->word);
-        daran_reply_text(drive, " id", 3);
-        if (command->help[0] != '\0') {
-            daran_reply_space(drive);
-            daran_reply_cstr(drive, command->help);
+        const char *word = command->word;
+        size_t len = 0;
+        while (word[len] != '\0') {
+            len++;
         }
-        daran_reply_end(drive);
+        help_line(drive, word, len, true, command->help);
     }
     return DARAN_OK;
 }

@@ -79,15 +79,15 @@ static const daran_prop_t error_registers[] = {
     DARAN_PROP_CONTROLLER_ERROR,     DARAN_PROP_FET_THERMISTOR_ERROR, DARAN_PROP_MOTOR_THERMISTOR_ERROR,
     DARAN_PROP_CAN_ERROR,
 };
-static const char error_register_names[] =
-    "axis\0motor\0encoder\0controller\0fet_thermistor\0motor_thermistor\0can";
 #define ERROR_REGISTER_COUNT (sizeof error_registers / sizeof error_registers[0])
 
 daran_result_t daran_cmd_e(daran_drive_t *drive, const daran_request_t *request)
 {
     /* Every register is read before the first line goes out: a failing read
-     * answers one error line, never half a report. A register the port left
-     * out of its table reads as 0. */
+     * answers one error line, never half a report; a register the HAL does
+     * not keep (DARAN_ERR_INVALID_PROPERTY) reads 0. A port cannot leave
+     * these rows out of the table (the generator refuses): their paths name
+     * the lines. */
     uint32_t values[ERROR_REGISTER_COUNT];
     (void)request;
     for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
@@ -100,17 +100,20 @@ daran_result_t daran_cmd_e(daran_drive_t *drive, const daran_request_t *request)
         }
         values[i] = value.u32;
     }
-    const char *name = error_register_names;
     for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
+        /* the name is the register's path without ".error"; `axis` for
+         * axis0.error itself */
+        char path[DARAN_PATH_MAX];
+        size_t len = daran_property_path(error_registers[i], path);
         daran_reply_begin(drive);
-        daran_reply_cstr(drive, name);
+        if (len > 6u) {
+            daran_reply_text(drive, path, len - 6u);
+        } else {
+            daran_reply_text(drive, "axis", 4);
+        }
         daran_reply_text(drive, ": ", 2);
         daran_reply_u64(drive, values[i]);
         daran_reply_end(drive);
-        while (*name != '\0') {
-            name++;
-        }
-        name++;
     }
     return DARAN_OK;
 }

@@ -423,17 +423,6 @@ daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out)
     if ((text == NULL && len != 0) || out == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
-    if (len > 0u && len <= 19u) {
-        /* plain digits, the usual shape: below 10^19, no overflow possible */
-        for (i = 0; i < len && (uint32_t)(text[i] - '0') <= 9u; i++) {
-            v = v * 10u + (uint32_t)(text[i] - '0');
-        }
-        if (i == len) {
-            *out = v;
-            return DARAN_OK;
-        }
-        v = 0;
-    }
     if (!number_scan(text, len, &s)) {
         return DARAN_ERR_INVALID_VALUE;
     }

@@ -27,7 +27,7 @@ static char word_char(size_t i)
 {
     size_t bit = i * 5u;
     unsigned pair = (unsigned)word_text[bit >> 3] | (unsigned)word_text[(bit >> 3) + 1u] << 8;
-    return DARAN_WORD_ALPHABET[(pair >> (bit & 7u)) & 0x1Fu];
+    return daran_word_char((pair >> (bit & 7u)) & 0x1Fu);
 }
 
 static unsigned path_start(unsigned prop)

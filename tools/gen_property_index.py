@@ -197,6 +197,27 @@ def generate(rows, omit):
     for k in range(0, len(words), 12):
         out.append("/*   " + " ".join(words[k:k + 12]) + " */")
     out.append("#define DARAN_WORD_ALPHABET " + c_string(alphabet))
+    # The character of a code, as arithmetic when the alphabet is digits,
+    # then capitals, then lower case, each run contiguous (a table otherwise).
+    runs = []
+    for ch in alphabet:
+        if runs and ord(ch) == ord(runs[-1][0]) + runs[-1][1]:
+            runs[-1][1] += 1
+        else:
+            runs.append([ch, 1])
+    out.append("static char daran_word_char(unsigned code)")
+    out.append("{")
+    if len(runs) <= 4:
+        first = 0
+        for ch, count in runs[:-1]:
+            out.append("    if (code < %du) {" % (first + count))
+            out.append("        return (char)('%s' + (code - %du));" % (ch, first))
+            out.append("    }")
+            first += count
+        out.append("    return (char)('%s' + (code - %du));" % (runs[-1][0], first))
+    else:
+        out.append("    return DARAN_WORD_ALPHABET[code];")
+    out.append("}")
     bits = 0
     nbits = 0
     packed = []
@@ -331,6 +352,12 @@ def main():
         if unknown:
             sys.exit("gen_property_index: DARAN_OMIT_PROPERTIES names no vendor property: " + " ".join(unknown))
         omit |= port_omit
+    # `e` names each error register by its path: they cannot be left out
+    needed = {"AXIS_ERROR", "MOTOR_ERROR", "ENCODER_ERROR", "CONTROLLER_ERROR",
+              "FET_THERMISTOR_ERROR", "MOTOR_THERMISTOR_ERROR", "CAN_ERROR"}
+    if omit & needed:
+        sys.exit("gen_property_index: the error registers cannot be left out (`e` names them): " +
+                 " ".join(sorted(omit & needed)))
     text, stats = generate(rows, omit)
     try:
         old = open(args.out, encoding="ascii").read()
