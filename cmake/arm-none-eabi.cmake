@@ -1,5 +1,6 @@
 # Shared part of the bare-metal Arm toolchain files: the GNU Arm Embedded
-# compilers and binutils, newlib-nano, no host programs in try_compile.
+# compilers and binutils, the C library per image (newlib-nano for firmware),
+# no host programs in try_compile.
 # A per-CPU file (cortex-m4.cmake) sets DARAN_ARM_CPU_FLAGS (and optionally
 # DARAN_ARM_OPT_FLAGS) and includes this.
 include_guard(GLOBAL)
@@ -28,13 +29,18 @@ set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
 
-# newlib-nano: the small C library; the firmware brings its own startup and
-# uses no stdio, so no syscall stubs are linked (a stray printf fails the link
-# or the symbol budget instead of pulling in kilobytes).
 set(DARAN_ARM_COMMON_FLAGS "${DARAN_ARM_CPU_FLAGS} ${DARAN_ARM_OPT_FLAGS} -ffunction-sections -fdata-sections")
 set(CMAKE_C_FLAGS_INIT "${DARAN_ARM_COMMON_FLAGS}")
 set(CMAKE_ASM_FLAGS_INIT "${DARAN_ARM_CPU_FLAGS}")
-set(CMAKE_EXE_LINKER_FLAGS_INIT "${DARAN_ARM_CPU_FLAGS} --specs=nano.specs -Wl,--gc-sections")
+set(CMAKE_EXE_LINKER_FLAGS_INIT "${DARAN_ARM_CPU_FLAGS} -Wl,--gc-sections")
+
+# The C library, chosen per image at link time: newlib-nano for the firmware
+# (the small C library; the firmware brings its own startup and uses no
+# stdio, so no syscall stubs are linked and a stray printf fails the link or
+# the symbol budget instead of pulling in kilobytes), the full newlib for the
+# Unity test images (printf of floats, %a and %zu in the tests' messages).
+# daran_fw_image() in port/mps2-an386 adds these flags to firmware images only.
+set(DARAN_ARM_NANO_LINK_FLAGS "--specs=nano.specs")
 
 set(CMAKE_C_FLAGS_DEBUG_INIT "-Og -g3")
 

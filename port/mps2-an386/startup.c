@@ -21,6 +21,16 @@ extern uint32_t __stack_top[];
 int main(void);
 void daran_fw_reset(void);
 
+/* main() returned with @p status. The firmware's main() never returns, so
+ * by default this is a fault; a test image (tests/target) overrides it to end
+ * the run with main()'s status (a Unity program returns its failure count). */
+void daran_fw_main_returned(int status) __attribute__((noreturn));
+__attribute__((weak)) void daran_fw_main_returned(int status)
+{
+    (void)status;
+    daran_board_fatal(4);
+}
+
 #define SCB_CPACR (*(volatile uint32_t *)0xE000ED88u)
 
 /* An exception nobody expected: stop where a debugger (or the test runner,
@@ -52,8 +62,7 @@ void daran_fw_reset(void)
             *dst++ = 0u;
         }
     }
-    (void)main();
-    daran_board_fatal(4);
+    daran_fw_main_returned(main());
 }
 
 typedef void (*daran_fw_vector_t)(void);
