@@ -7,6 +7,11 @@ of instructions per line, the marker's own cost subtracted.
 
   measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf
                    [--nm arm-none-eabi-nm] [--profile LABEL] [--max-t-checksum N]
+                   [--machine mps2-an386]
+
+--machine M       the QEMU machine (default mps2-an386, Cortex-M4F; microbit
+                  is a Cortex-M0: bench/m0/measure.sh); the labels may come on
+                  the UART (-serial stdio) or through semihosting, both stdout
 
 --profile LABEL   also break that line's count down per function
 --max-t-checksum  exit 1 when "t with checksum" takes more than N instructions
@@ -19,8 +24,9 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-QEMU = ["qemu-system-arm", "-M", "mps2-an386", "-nographic", "-monitor", "none",
-        "-serial", "stdio", "-semihosting-config", "enable=on,target=native"]
+QEMU_ARGS = ["-nographic", "-monitor", "none", "-serial", "stdio",
+             "-semihosting-config", "enable=on,target=native"]
+MACHINE = "mps2-an386"
 
 
 def build_plugin(out_dir):
@@ -48,12 +54,17 @@ def run(elf, plugin, mark, profile=None):
     with tempfile.TemporaryDirectory() as tmp:
         log = os.path.join(tmp, "plugin.log")
         arg = f"{plugin},mark=0x{mark:x}" + (f",profile={profile}" if profile is not None else "")
-        proc = subprocess.run(QEMU + ["-kernel", elf, "-plugin", arg, "-d", "plugin", "-D", log],
-                              stdout=subprocess.PIPE, timeout=60, check=True)
+        proc = subprocess.run(["qemu-system-arm", "-M", MACHINE] + QEMU_ARGS +
+                              ["-kernel", elf, "-plugin", arg, "-d", "plugin", "-D", log],
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=60,
+                              check=True)
         with open(log) as f:
             out = f.read().splitlines()
-    labels = [l.split("\t")[0] for l in proc.stdout.decode().splitlines() if "\t" in l]
-    texts = [l.split("\t")[1] for l in proc.stdout.decode().splitlines() if "\t" in l]
+    # the labels: on the UART (stdout), or through semihosting (QEMU writes
+    # that console to stderr)
+    said = proc.stdout.decode().splitlines() or proc.stderr.decode().splitlines()
+    labels = [l.split("\t")[0] for l in said if "\t" in l]
+    texts = [l.split("\t")[1] for l in said if "\t" in l]
     marks = [int(l.split()[2]) for l in out if l.startswith("mark ")]
     blocks = [(int(l.split()[1], 16), int(l.split()[2])) for l in out if l.startswith("block ")]
     return labels, texts, marks, blocks
@@ -66,7 +77,10 @@ def main():
     ap.add_argument("--plugin-dir", default=None)
     ap.add_argument("--profile", default=None)
     ap.add_argument("--max-t-checksum", type=int, default=None)
+    ap.add_argument("--machine", default="mps2-an386")
     opt = ap.parse_args()
+    global MACHINE
+    MACHINE = opt.machine
 
     plugin = build_plugin(opt.plugin_dir or os.path.dirname(os.path.abspath(opt.elf)))
     funcs = symbols(opt.nm, opt.elf)
