@@ -1,0 +1,55 @@
+#!/bin/sh
+# Every target figure of docs/performance.md: the core's flash in the
+# cortex-m4 preset (what CTest budget_core_flash measures), instructions per
+# protocol line on the Cortex-M4 (QEMU mps2-an386, the cortex-m4 preset's
+# tests/target/daran-perf.elf) and, as a report, on a Cortex-M0 (QEMU
+# microbit, bench/m0), each with the per-function profile of
+# `t 1 10 0 25 *83`. Rewrites the generated blocks m4insns and m0 of
+# docs/performance.md; results in build/bench/results/{m4insns,m0}.md.
+#
+#   bench/target_insns.sh
+#
+# Needs arm-none-eabi-gcc, qemu-system-arm (7.2: mps2-an386 and microbit),
+# a host C compiler for the plugin, python3. About a minute.
+set -eu
+cd "$(dirname "$0")/.."
+results=build/bench/results
+mkdir -p "$results"
+commit=$(git rev-parse --short HEAD)
+dirty=""
+[ -n "$(git status --porcelain -- src include 2>/dev/null)" ] && dirty=" with uncommitted changes in src/ or include/"
+qemu=$(qemu-system-arm --version | head -1)
+gcc=$(arm-none-eabi-gcc --version | head -1)
+
+echo "== cortex-m4 preset: the library and daran-perf.elf"
+cmake --preset cortex-m4 >/dev/null
+cmake --build build/cortex-m4 --target daran_ascii daran-perf >/dev/null
+{
+  echo "Measured on commit $commit$dirty, $gcc \`-Os\` (the \`cortex-m4\` preset, MinSizeRel),"
+  echo "$qemu, machine \`mps2-an386\` (Cortex-M4F)."
+  echo
+  echo "Core flash (\`arm-none-eabi-size -t build/cortex-m4/src/libdaran_ascii.a\`, text + data"
+  echo "of the TOTALS line, as CTest \`budget_core_flash\` counts it):"
+  echo
+  echo '```'
+  arm-none-eabi-size -t build/cortex-m4/src/libdaran_ascii.a | tail -1
+  echo '```'
+  echo
+  echo "\`python3 tools/qemu-insn-count/measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf --profile \"t with checksum\" --max-t-checksum 600\`:"
+  echo
+  python3 tools/qemu-insn-count/measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf \
+    --profile "t with checksum" --max-t-checksum 600 || true
+} >"$results/m4insns.md"
+cat "$results/m4insns.md"
+
+echo "== Cortex-M0 (bench/m0)"
+{
+  echo "Measured on commit $commit$dirty, $qemu, machine \`microbit\` (nRF51822, Cortex-M0, no FPU);"
+  echo "\`bench/m0/measure.sh\` (builds with \`bench/m0/build.sh\`, then runs"
+  echo "\`python3 tools/qemu-insn-count/measure_insns.py --elf build/bench/m0/daran-m0.elf --machine microbit --profile \"t with checksum\"\`)."
+  echo
+  sh bench/m0/measure.sh build/bench/m0
+} >"$results/m0.md"
+cat "$results/m0.md"
+
+python3 bench/host/update_docs.py docs/performance.md m4insns="$results/m4insns.md" m0="$results/m0.md"
