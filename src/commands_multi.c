@@ -97,10 +97,7 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
         const float shape_values[3] = {values[0], 1.0f, values[2]};
         result = daran_shape_move(shape, shape_values, 3, move);
     } else {
-        result = daran_shape_check(shape, values, 3);
-        if (result == DARAN_OK) {
-            result = daran_shape_move(shape, values, 3, move);
-        }
+        result = daran_shape_move(shape, values, 3, move);
     }
     if (result != DARAN_OK || shape == DARAN_SHAPE_V || shape == DARAN_SHAPE_C) {
         return result;

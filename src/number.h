@@ -28,6 +28,10 @@ daran_result_t daran_parse_f32(const char *text, size_t len, float *out);
  * UINT64_MAX. *out is untouched on error. */
 daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out);
 
+/* The public names of the two printers (daran_port.h): one function each. */
+#define daran_format_f32 daran_format_float
+#define daran_format_u64 daran_format_uint
+
 /* Write the shortest decimal that parses back to the same float32 into
  * buf[0..DARAN_F32_TEXT_MAX): positional when its decimal exponent k (value =
  * d.ddd x 10^k) is within -5..8, else scientific "d.ddde+XX" with at least

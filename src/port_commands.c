@@ -124,13 +124,3 @@ void daran_reply(daran_drive_t *drive, const char *payload, size_t len)
     daran_reply_text(drive, payload, len);
     daran_reply_end(drive);
 }
-
-size_t daran_format_float(float value, char *buf)
-{
-    return daran_format_f32(value, buf);
-}
-
-size_t daran_format_uint(uint64_t value, char *buf)
-{
-    return daran_format_u64(value, buf);
-}

@@ -52,13 +52,6 @@ static uint8_t stored(uint8_t byte)
     return byte == DARAN_RX_DAMAGED_END ? DARAN_RX_INVALID_BYTE : byte;
 }
 
-static void copy_in(uint8_t *to, const uint8_t *from, size_t n)
-{
-    for (size_t i = 0; i < n; i++) {
-        to[i] = stored(from[i]);
-    }
-}
-
 /* The byte-by-byte road: a full ring, or a line being discarded. Returns
  * the new head. */
 static uint16_t put_slow(daran_rx_ring_t *ring, uint16_t head, uint16_t tail, uint8_t byte,
@@ -86,14 +79,7 @@ static uint16_t put_slow(daran_rx_ring_t *ring, uint16_t head, uint16_t tail, ui
 
 bool daran_rx_byte(daran_drive_t *drive, uint8_t byte)
 {
-    daran_rx_ring_t *ring = &drive->rx;
-    uint16_t head = LOAD_OWN(&ring->head);
-    bool queued;
-    head = put_slow(ring, head, LOAD_ACQUIRE(&ring->tail), byte, &queued);
-    if (queued) {
-        STORE_RELEASE(&ring->head, head);
-    }
-    return queued;
+    return daran_rx_write(drive, &byte, 1) == 1u;
 }
 
 size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
@@ -105,15 +91,12 @@ size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
     size_t room = DARAN_RX_RING_SIZE - (uint16_t)(head - tail);
     size_t i = 0;
     if (!ring->producer_dropping) {
-        /* The common case: copy what fits, in at most two contiguous runs
-         * (before and after the ring's end), one release for all of it. */
+        /* The common case: copy what fits, one release for all of it. */
         size_t fast = len < room ? len : room;
-        size_t slot = head & MASK;
-        size_t first = fast < DARAN_RX_RING_SIZE - slot ? fast : DARAN_RX_RING_SIZE - slot;
-        copy_in(&ring->bytes[slot], bytes, first);
-        copy_in(&ring->bytes[0], bytes + first, fast - first);
+        for (; i < fast; i++) {
+            ring->bytes[(head + i) & MASK] = stored(bytes[i]);
+        }
         head = (uint16_t)(head + fast);
-        i = fast;
     }
     size_t queued = i;
     for (; i < len; i++) {
