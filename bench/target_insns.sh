@@ -5,7 +5,9 @@
 # tests/target/daran-perf.elf) and, as a report, on a Cortex-M0 (QEMU
 # microbit, bench/m0), each with the per-function profile of
 # `t 1 10 0 25 *83`. Rewrites the generated blocks m4insns and m0 of
-# docs/performance.md; results in build/bench/results/{m4insns,m0}.md.
+# docs/performance.md (and the summary, from bench/summary.py, once
+# bench/host/run_all.sh has left its results); results in
+# build/bench/results/{m4insns,m0,m4budgets,summary}.*
 #
 #   bench/target_insns.sh
 #
@@ -23,7 +25,10 @@ gcc=$(arm-none-eabi-gcc --version | head -1)
 
 echo "== cortex-m4 preset: the library and daran-perf.elf"
 cmake --preset cortex-m4 >/dev/null
-cmake --build build/cortex-m4 --target daran_ascii daran-perf >/dev/null
+cmake --build build/cortex-m4 --target daran_ascii daran-perf daran_target_sizeof >/dev/null
+# the budgets CTest enforces: flash, RAM of an instance, worst-case stack
+ctest --test-dir build/cortex-m4 -R "budget_core_flash|budget_drive_ram|budget_core_stack" -V \
+  >"$results/m4budgets.txt" 2>&1 || true
 {
   echo "Measured on commit $commit$dirty, $gcc \`-Os\` (the \`cortex-m4\` preset, MinSizeRel),"
   echo "$qemu, machine \`mps2-an386\` (Cortex-M4F)."
@@ -38,7 +43,7 @@ cmake --build build/cortex-m4 --target daran_ascii daran-perf >/dev/null
   echo "\`python3 tools/qemu-insn-count/measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf --profile \"t with checksum\" --max-t-checksum 600\`:"
   echo
   python3 tools/qemu-insn-count/measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf \
-    --profile "t with checksum" --max-t-checksum 600 || true
+    --profile "t with checksum" --max-t-checksum 600 --json "$results/m4insns.json" || true
 } >"$results/m4insns.md"
 cat "$results/m4insns.md"
 
@@ -48,8 +53,12 @@ echo "== Cortex-M0 (bench/m0)"
   echo "\`bench/m0/measure.sh\` (builds with \`bench/m0/build.sh\`, then runs"
   echo "\`python3 tools/qemu-insn-count/measure_insns.py --elf build/bench/m0/daran-m0.elf --machine microbit --profile \"t with checksum\"\`)."
   echo
-  sh bench/m0/measure.sh build/bench/m0
+  M0_JSON="$results/m0.json" sh bench/m0/measure.sh build/bench/m0
 } >"$results/m0.md"
 cat "$results/m0.md"
 
 python3 bench/host/update_docs.py docs/performance.md m4insns="$results/m4insns.md" m0="$results/m0.md"
+if [ -f "$results/host.json" ]; then
+  python3 bench/summary.py "$results" >"$results/summary.md"
+  python3 bench/host/update_docs.py docs/performance.md summary="$results/summary.md"
+fi

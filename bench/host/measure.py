@@ -29,6 +29,7 @@ Definitions
                 / lines: what each line costs the program, libc included
 """
 import argparse
+import json
 import os
 import re
 import subprocess
@@ -424,6 +425,19 @@ def rounding(binary, driver, out):
     with open(os.path.join(out, "rounding.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     print("wrote", os.path.join(out, "rounding.md"))
+    # the figures the summary quotes: rate over all the streams' numbers, over
+    # the 8-to-17-digit random decimals of each spelling, and HAL calls
+    figures = {}
+    for line in "\n".join(md).splitlines():
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        if cells[0] == "**all**":
+            figures["streams"] = [int(cells[1]), int(cells[2])]
+        elif cells[0] == "**8 to 17**":
+            figures.setdefault("random_8_17", []).append([int(cells[1]), int(cells[2])])
+        elif line.startswith("handwritten vs core, all streams"):
+            figures["hal"] = line
+    with open(os.path.join(out, "rounding.json"), "w") as f:
+        json.dump(figures, f, indent=1)
 
 
 def main():
@@ -474,6 +488,14 @@ def main():
         md.append("")
     if args.reference:
         write_reference(args.reference, refs)
+    lookup_stats = {m: [min(c), sum(c) / len(c), max(c), sum(1 for x in c if x > TARGET_LOOKUP)]
+                    for m, c in lookups.items()}
+    with open(os.path.join(args.out, "host.json"), "w") as f:
+        json.dump({"provenance": provenance(args.driver), "families": dict(families),
+                   "sessions": sessions, "lookup": lookup_stats, "rows": len(lookups["ours"]),
+                   "reference": refs,
+                   "reference_lines": lines_in(os.path.join(STREAMS, "reference.txt"))},
+                  f, indent=1)
     with open(os.path.join(args.out, "host.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     print("wrote", os.path.join(args.out, "host.md"))

@@ -67,4 +67,9 @@ echo "== docs/performance.md (generated blocks only)"
 python3 bench/host/update_docs.py docs/performance.md host="$results/host.md" \
   rounding="$results/rounding.md" m4="$results/m4.md"
 
+if [ -f "$results/m4insns.json" ] && [ -f "$results/m0.json" ]; then
+  python3 bench/summary.py "$results" >"$results/summary.md"
+  python3 bench/host/update_docs.py docs/performance.md summary="$results/summary.md"
+fi
+
 echo "== done: $results/host.md, $results/rounding.md, $results/m4.md, docs/bench-host-*.png"

@@ -7,7 +7,8 @@ Each NAME names a block written as
     <!-- BEGIN generated: NAME (bench/host/run_all.sh) -->
     ...
     <!-- END generated: NAME -->
-(the blocks m4insns and m0 name bench/target_insns.sh instead), whose
+(the blocks m4insns and m0 name bench/target_insns.sh instead, the block
+summary bench/summary.py), whose
 inside becomes FILE's text. Nothing outside the markers is touched, so
 other sections of the page stay as their owners wrote them."""
 import sys
@@ -18,7 +19,8 @@ def main():
     text = open(doc).read()
     for arg in sys.argv[2:]:
         name, path = arg.split("=", 1)
-        script = "bench/target_insns.sh" if name in ("m4insns", "m0") else "bench/host/run_all.sh"
+        script = {"m4insns": "bench/target_insns.sh", "m0": "bench/target_insns.sh",
+                  "summary": "bench/summary.py"}.get(name, "bench/host/run_all.sh")
         begin = "<!-- BEGIN generated: %s (%s) -->" % (name, script)
         end = "<!-- END generated: %s -->" % name
         if begin not in text or end not in text:

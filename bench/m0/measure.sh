@@ -12,4 +12,4 @@ out=${1:-build/bench/m0}
 sh bench/m0/build.sh "$out"
 echo
 python3 tools/qemu-insn-count/measure_insns.py --elf "$out/daran-m0.elf" --machine microbit \
-  --profile "t with checksum"
+  --profile "t with checksum" ${M0_JSON:+--json "$M0_JSON"}

@@ -9,6 +9,7 @@ of instructions per line, the marker's own cost subtracted.
                    [--nm arm-none-eabi-nm] [--profile LABEL] [--max-t-checksum N]
                    [--machine mps2-an386]
 
+--json FILE       also write the counts (and the profile) as JSON
 --machine M       the QEMU machine (default mps2-an386, Cortex-M4F; microbit
                   is a Cortex-M0: bench/m0/measure.sh); the labels may come on
                   the UART (-serial stdio) or through semihosting, both stdout
@@ -18,6 +19,7 @@ of instructions per line, the marker's own cost subtracted.
 """
 import argparse
 import bisect
+import json
 import os
 import subprocess
 import sys
@@ -78,6 +80,7 @@ def main():
     ap.add_argument("--profile", default=None)
     ap.add_argument("--max-t-checksum", type=int, default=None)
     ap.add_argument("--machine", default="mps2-an386")
+    ap.add_argument("--json", default=None)
     opt = ap.parse_args()
     global MACHINE
     MACHINE = opt.machine
@@ -94,6 +97,8 @@ def main():
     for label, text, n in zip(labels, texts, counts):
         print(f"| {label} | `{text.rstrip()}` | {n} |")
     status = 0
+    result = {"machine": MACHINE, "counts": dict(zip(labels, counts)),
+              "texts": dict(zip(labels, [t.rstrip() for t in texts]))}
     if opt.max_t_checksum is not None:
         n = counts[labels.index("t with checksum")]
         verdict = "within" if n <= opt.max_t_checksum else "OVER"
@@ -113,6 +118,11 @@ def main():
         print("|---|---:|")
         for name, n in sorted(per_fn.items(), key=lambda kv: -kv[1]):
             print(f"| {name} | {n} |")
+        result["profile_line"] = opt.profile
+        result["profile"] = dict(sorted(per_fn.items(), key=lambda kv: -kv[1]))
+    if opt.json:
+        with open(opt.json, "w") as f:
+            json.dump(result, f, indent=1)
     return status
 
 
