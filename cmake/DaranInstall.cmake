@@ -18,7 +18,11 @@ set(DARAN_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/daran_ascii"
     CACHE STRING "Where the CMake package files go, relative to the prefix")
 mark_as_advanced(DARAN_INSTALL_CMAKEDIR)
 
-file(GLOB _daran_public_headers CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/include/*.h")
+set(_daran_public_headers)
+foreach(_h IN ITEMS daran_ascii.h daran_config.h daran_drive.h daran_hal.h daran_port.h
+                    daran_properties.h daran_result.h daran_version.h)
+  list(APPEND _daran_public_headers "${PROJECT_SOURCE_DIR}/include/${_h}")
+endforeach()
 
 # The user options header changes the layout of daran_drive_t, so a consumer
 # must compile against the very header the library was built with. It is
@@ -44,12 +48,8 @@ if(DARAN_CONFIG_HEADER)
                           "the library installs a header of that name")
     endif()
   endforeach()
-  get_target_property(_daran_defs daran_ascii INTERFACE_COMPILE_DEFINITIONS)
-  # The build tree keeps the definition src/CMakeLists.txt made; only the
-  # installed one changes.
-  list(TRANSFORM _daran_defs REPLACE "^DARAN_CONFIG_HEADER=(.*)$"
-       "$<BUILD_INTERFACE:DARAN_CONFIG_HEADER=\\1>;$<INSTALL_INTERFACE:DARAN_CONFIG_HEADER=${_daran_config_header_name}>")
-  set_property(TARGET daran_ascii PROPERTY INTERFACE_COMPILE_DEFINITIONS "${_daran_defs}")
+  # src/CMakeLists.txt defines DARAN_CONFIG_HEADER: the path here, the file
+  # name in the installed package.
   install(FILES "${_daran_config_header_path}" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 endif()
 

@@ -10,5 +10,6 @@
 #include "daran_port.h"
 #include "daran_properties.h"
 #include "daran_result.h"
+#include "daran_version.h"
 
 #endif /* DARAN_ASCII_H */

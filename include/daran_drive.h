@@ -158,13 +158,18 @@ size_t daran_poll(daran_drive_t *drive);
 
 /** Process one line the caller framed itself (without its `\n`; a trailing
  * `\r` is whitespace). Length and characters are checked as on the byte path.
+ * It uses the line buffer of the byte path: a line daran_poll() had begun
+ * to frame loses its beginning, and its rest is answered `line too long`
+ * when its `\n` arrives, never executed (D38). Use one road per drive, or
+ * call this only between lines.
  * All-or-nothing: a line that is answered with an error made no HAL setter,
  * move or action call. Returns DARAN_OK when the line was executed, ignored
  * (blank) or not addressed to this drive, otherwise the error that was
  * answered. O(len). */
 daran_result_t daran_process_line(daran_drive_t *drive, const char *line, size_t len);
 
-/** The library version, "MAJOR.MINOR.PATCH". */
+/** The library version, "MAJOR.MINOR.PATCH" (DARAN_VERSION_TEXT of the
+ * library as built; compare with the header's to catch a mismatch). */
 const char *daran_version(void);
 
 #ifdef __cplusplus

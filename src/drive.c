@@ -34,14 +34,21 @@ daran_result_t daran_process_line(daran_drive_t *drive, const char *text, size_t
 {
     /* The same road as received bytes: through the framer into the line
      * buffer, so length, characters, fields and checksum are judged in one
-     * place. A '\n' inside the text is an invalid character here. */
+     * place. A '\n' inside the text is an invalid character here. The line
+     * buffer is shared with the byte path: a line it was receiving loses its
+     * beginning, so its rest is answered `line too long` (D38). */
+    bool interrupted = drive->line_len != 0u || drive->line_flags != 0u;
     daran_framer_reset(drive);
     bool ended = false;
     size_t taken = daran_framer_feed(drive, (const uint8_t *)text, len, false, &ended);
     if (ended || taken < len) {
         drive->line_flags |= DARAN_LINE_INVALID_BYTE;
     }
-    return daran_run_framed_line(drive);
+    daran_result_t result = daran_run_framed_line(drive);
+    if (interrupted) {
+        drive->line_flags = DARAN_LINE_DAMAGED;
+    }
+    return result;
 }
 
 /* An `axisN.` path: N is the motor, the rest is looked up among the axis

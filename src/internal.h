@@ -97,6 +97,9 @@ typedef struct daran_line {
     uint8_t xor_before_star;
 } daran_line_t;
 
+/* result.c: string n (0-based) of a block of NUL-separated strings */
+const char *daran_nth_text(const char *block, unsigned n);
+
 /* checksum.c */
 uint8_t daran_xor(const char *text, size_t len);
 /* Check the "*N" field of a line (D4). DARAN_OK with *has_checksum 0 when

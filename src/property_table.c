@@ -56,14 +56,7 @@ static const char range_text[] =
 
 const char *daran_range_text(daran_range_t range)
 {
-    const char *text = range_text;
-    for (unsigned n = (unsigned)range; n > 0u; n--) {
-        while (*text != '\0') {
-            text++;
-        }
-        text++;
-    }
-    return text;
+    return daran_nth_text(range_text, (unsigned)range);
 }
 
 /* A decimal integer at *p, optionally negative; moves *p past it. */
@@ -159,14 +152,7 @@ static const char unit_text[] = "-\0" DARAN_UNIT_TEXT;
 
 const char *daran_unit_text(daran_property_t row)
 {
-    const char *unit = unit_text;
-    for (unsigned n = DARAN_PROPERTY_UNIT(row); n > 0u; n--) {
-        while (*unit != '\0') {
-            unit++;
-        }
-        unit++;
-    }
-    return unit;
+    return daran_nth_text(unit_text, DARAN_PROPERTY_UNIT(row));
 }
 
 /* Does name[0..len) spell property @p prop's path? */

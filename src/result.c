@@ -1,6 +1,6 @@
 /* The error phrases of the protocol, one per daran_result_t, kept as one
  * block of NUL-separated strings in enum order (no table of pointers). */
-#include "daran_result.h"
+#include "internal.h"
 
 static const char phrases[] =
     "ok\0"
@@ -23,19 +23,20 @@ static const char phrases[] =
     "motor idle\0"
     "bad argument";
 
+const char *daran_nth_text(const char *block, unsigned n)
+{
+    for (; n > 0u; n--) {
+        while (*block++ != '\0') {
+        }
+    }
+    return block;
+}
+
 const char *daran_result_phrase(daran_result_t result)
 {
     /* A HAL may hand back any integer; an unknown one is a hardware fault. */
     unsigned index = (unsigned)result;
-    if (index >= (unsigned)DARAN_RESULT_COUNT) {
-        index = (unsigned)DARAN_ERR_MOTOR_FAULT;
-    }
-    const char *phrase = phrases;
-    for (unsigned i = 0; i < index; i++) {
-        while (*phrase != '\0') {
-            phrase++;
-        }
-        phrase++;
-    }
-    return phrase;
+    return daran_nth_text(phrases, index < (unsigned)DARAN_RESULT_COUNT
+                                       ? index
+                                       : (unsigned)DARAN_ERR_MOTOR_FAULT);
 }

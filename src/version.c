@@ -1,11 +1,8 @@
-/* The library version, set by the build from the CMake project version. */
+/* The library version (include/daran_version.h, which the build also reads). */
 #include "daran_drive.h"
-
-#ifndef DARAN_VERSION_STRING
-#define DARAN_VERSION_STRING "0.0.0"
-#endif
+#include "daran_version.h"
 
 const char *daran_version(void)
 {
-    return DARAN_VERSION_STRING;
+    return DARAN_VERSION_TEXT;
 }

@@ -90,7 +90,7 @@ consumer_cmake() {
 consumer_pkg_config() {
   local prefix=$1 out=$2
   export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
-  [ "$(pkg-config --modversion daran_ascii)" = 0.1.0 ] || { echo "wrong --modversion"; return 1; }
+  [ "$(pkg-config --modversion daran_ascii)" = "$(sed -n "s/^#define DARAN_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\).*/\2/p" include/daran_version.h | paste -sd.)" ] || { echo "wrong --modversion"; return 1; }
   pkg-config --static --libs daran_ascii | grep -q -- -lm || { echo "no -lm in --static --libs"; return 1; }
   # shellcheck disable=SC2046  # the flags must split into words
   cc -std=c99 -Wall -Wextra -Werror -o "$out" tests/consumer/consumer.c \
