@@ -441,6 +441,29 @@ static void test_process_line_runs_a_framed_line(void)
     ASSERT_REPLY(m, "0 0\n");
 }
 
+static void test_process_line_between_the_bytes_of_a_line_never_runs_its_rest(void)
+{
+    /* D38: the byte path has framed "t 1 1" when a pre-framed line comes */
+    mock_t *m = mock_new();
+    mock_clear(m);
+    (void)daran_rx_write(&m->drive, "t 1 1", 5);
+    (void)daran_poll(&m->drive);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 1", 3));
+    ASSERT_REPLY(m, "0 0\n");
+    (void)daran_rx_write(&m->drive, "0\n", 2); /* "0" alone must not become a line */
+    (void)daran_poll(&m->drive);
+    ASSERT_REPLY(m, "error: line too long\n");
+    ASSERT_NO_EFFECT(m);
+    /* the next line is whole again */
+    mock_send_line(m, "t 1 10");
+    TEST_ASSERT_EQUAL_UINT(2, m->n_calls); /* move and watchdog feed */
+    /* without a pending line, nothing is marked */
+    mock_clear(m);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 1", 3));
+    mock_send_line(m, "f 1");
+    ASSERT_REPLY(m, "0 0\n");
+}
+
 static void test_process_line_returns_the_error_it_answered(void)
 {
     mock_t *m = mock_new();
@@ -500,6 +523,7 @@ int main(void)
     ADD(test_rx_dropped_starts_at_zero);
     ADD(test_process_line_runs_a_framed_line);
     ADD(test_process_line_returns_the_error_it_answered);
+    ADD(test_process_line_between_the_bytes_of_a_line_never_runs_its_rest);
     mock_suite_run(&s);
     return UNITY_END();
 }
