@@ -20,8 +20,25 @@ typedef struct prop_rule {
     {DARAN_TYPE_##type, FUZZ_ACCESS_##access, DARAN_RANGE_##range},
 #define FUZZ_ACCESS_RO false
 #define FUZZ_ACCESS_RW true
-static const prop_rule_t rules[DARAN_PROP_COUNT] = {DARAN_PROPERTY_LIST(FUZZ_RULE_)};
+static const prop_rule_t rules[DARAN_PROP_COUNT] = {
+    DARAN_PROPERTY_LIST(FUZZ_RULE_)
+#ifdef DARAN_PORT_PROPERTY_LIST
+    /* a port's own rows (fuzz_port: examples/port-brake/brake_options.h) */
+    DARAN_PORT_PROPERTY_LIST(FUZZ_RULE_)
+#endif
+};
 #undef FUZZ_RULE_
+
+#ifdef DARAN_OMIT_PROPERTIES
+/* The rows the port's options header leaves out: their paths answer
+ * `invalid property`, so the core must never get or set them. */
+#define FUZZ_OMIT_(id) [DARAN_PROP_##id] = true,
+static const bool omitted[DARAN_PROP_COUNT] = {DARAN_OMIT_PROPERTIES(FUZZ_OMIT_)};
+#undef FUZZ_OMIT_
+#define FUZZ_OMITTED(prop) omitted[prop]
+#else
+#define FUZZ_OMITTED(prop) false
+#endif
 
 /* The phrases of protocol.md section 8, written out here rather than taken
  * from the core so that a wrong phrase in the core is caught. */
@@ -109,7 +126,7 @@ void fuzz_hal_init(fuzz_hal_t *h, uint32_t id)
 
 void fuzz_hal_clear(fuzz_hal_t *h)
 {
-    h->n_get = h->n_get_other = h->n_set = h->n_move = h->n_action = 0;
+    h->n_get = h->n_get_other = h->n_set = h->n_move = h->n_action = h->n_port = 0;
     h->failed = h->failed_was_last = h->get_failed = false;
     h->last_call = 0;
     h->out_len = 0;
@@ -133,7 +150,7 @@ void fuzz_hal_arm_get(fuzz_hal_t *h, uint32_t nth, int result)
 
 size_t fuzz_hal_mutations(const fuzz_hal_t *h)
 {
-    return h->n_set + h->n_move + h->n_action;
+    return h->n_set + h->n_move + h->n_action + h->n_port;
 }
 
 /* Count a mutating call; true when the injection makes it fail. */
@@ -172,6 +189,7 @@ static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
     fuzz_hal_t *h = ctx;
     interrupt(h);
     FUZZ_CHECK((int)prop >= 0 && prop < DARAN_PROP_COUNT, "get of property %d", (int)prop);
+    FUZZ_CHECK(!FUZZ_OMITTED(prop), "get of property %d, which the port left out", (int)prop);
     h->n_get++;
     if (prop != DARAN_PROP_CAN_NODE_ID) {
         h->n_get_other++;
@@ -291,6 +309,7 @@ static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
     fuzz_hal_t *h = ctx;
     interrupt(h);
     FUZZ_CHECK((int)prop >= 0 && prop < DARAN_PROP_COUNT, "set of property %d", (int)prop);
+    FUZZ_CHECK(!FUZZ_OMITTED(prop), "set of property %d, which the port left out", (int)prop);
     FUZZ_CHECK(rules[prop].writable, "set of read-only property %d", (int)prop);
     FUZZ_CHECK(value_in_range(prop, value), "set of property %d out of range (bits %08x)",
                (int)prop, (unsigned)value.u32);
@@ -409,6 +428,20 @@ static daran_result_t hal_action(void *ctx, daran_action_t action)
         break;
     default:
         break;
+    }
+    return outcome(h, DARAN_OK);
+}
+
+daran_result_t fuzz_hal_port_call(fuzz_hal_t *h, uint32_t tag, const void *data, size_t len)
+{
+    interrupt(h);
+    h->n_port++;
+    h->last_call = 'p';
+    uint32_t t = 5000u + tag;
+    h->hash = fuzz_hash(h->hash, &t, sizeof t);
+    h->hash = fuzz_hash(h->hash, data, len);
+    if (mutating_call(h)) {
+        return outcome(h, (daran_result_t)h->fail_result);
     }
     return outcome(h, DARAN_OK);
 }

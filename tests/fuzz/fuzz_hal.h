@@ -35,12 +35,13 @@ typedef struct fuzz_hal {
     size_t n_set;
     size_t n_move;
     size_t n_action;
+    size_t n_port;      /* calls of a port's own hardware (fuzz_hal_port_call) */
     daran_prop_t last_set_prop;
     daran_value_t last_set_value;
     daran_action_t last_action;
-    char last_call; /* 's'et, 'm'ove or 'a'ction: the last mutating call; 0 none */
+    char last_call; /* 's'et, 'm'ove, 'a'ction or 'p'ort: the last mutating call; 0 none */
 
-    /* fault injection: the fail_nth-th mutating call (set/move/action,
+    /* fault injection: the fail_nth-th mutating call (set/move/action/port,
      * counted since fuzz_hal_arm()) returns fail_result; 0 = off */
     uint32_t fail_nth;
     uint32_t mutating_seen;
@@ -83,6 +84,12 @@ void fuzz_hal_arm(fuzz_hal_t *h, uint32_t nth, int result);
 /* Fail the @p nth getter call from now on with @p result (0: off). */
 void fuzz_hal_arm_get(fuzz_hal_t *h, uint32_t nth, int result);
 size_t fuzz_hal_mutations(const fuzz_hal_t *h);
+
+/* A call of a port's own hardware (fuzz_port.c's brake chopper), made by a
+ * port command's handler: counted and hashed (with @p tag and @p data) as a
+ * mutating call, so invariants 2 and 3 and fault injection cover it.
+ * Returns DARAN_OK, or the injected failure. */
+daran_result_t fuzz_hal_port_call(fuzz_hal_t *h, uint32_t tag, const void *data, size_t len);
 
 /* daran_write_fn / daran_forward_fn with a fuzz_hal_t context. Each reply
  * line is checked against invariant 4 as it arrives. */

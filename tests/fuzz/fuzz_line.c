@@ -23,6 +23,25 @@
 #include "fuzz_hal.h"
 #include "number.h"
 
+/* fuzz_port.c includes this file with its own hooks: the port's command
+ * words for this harness's reading of the address, a set-up after the
+ * drive is bound, and checks around every line. */
+#ifndef FUZZ_LINE_EXTRA_WORDS
+#define FUZZ_LINE_EXTRA_WORDS
+#endif
+#ifndef FUZZ_LINE_SETUP
+#define FUZZ_LINE_SETUP(drive, hal, data) ((void)0)
+#endif
+#ifndef FUZZ_LINE_BEFORE
+#define FUZZ_LINE_BEFORE(line, len) ((void)0)
+#endif
+#ifndef FUZZ_LINE_AFTER
+#define FUZZ_LINE_AFTER(line, len, result, motor) ((void)0)
+#endif
+#ifndef FUZZ_LINE_END
+#define FUZZ_LINE_END(drive, hal) ((void)0)
+#endif
+
 static bool blank(char c)
 {
     return c == ' ' || c == '\t' || c == '\r';
@@ -78,7 +97,8 @@ static bool word_is(view_t w, const char *name)
 
 static const char *const words[] = {"t",  "q",  "p",  "v",  "c",  "d",  "ms", "mt", "mq",
                                     "mp", "mv", "mc", "r",  "w",  "ss", "se", "sr", "sc",
-                                    "sz", "st", "h",  "f",  "g",  "i",  "e",  "u"};
+                                    "sz", "st", "h",  "f",  "g",  "i",  "e",  "u",
+                                    FUZZ_LINE_EXTRA_WORDS};
 
 /* A motor id under D7, or -1 when it is not one. */
 static int motor_of(view_t f)
@@ -174,6 +194,7 @@ static void check_line(const char *line, size_t len)
     int motor = addressed_motor(line, len);
 
     fuzz_hal_clear(h);
+    FUZZ_LINE_BEFORE(line, len);
     daran_result_t r = daran_process_line(&st.drive, line, len);
     const char *what = fuzz_escape(line, len);
 
@@ -225,6 +246,7 @@ static void check_line(const char *line, size_t len)
                    "core forwarded to %u a line this harness reads as for %d: \"%s\"",
                    h->forward_id, motor, fuzz_escape(line, len));
     }
+    FUZZ_LINE_AFTER(line, len, r, motor);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -287,6 +309,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         st.hal.props[DARAN_PROP_TRAJ_MODE].u32 = 2u;
     }
     fuzz_bind(&st.drive, &st.hal, (data[1] & 4u) != 0u);
+    FUZZ_LINE_SETUP(&st.drive, &st.hal, data);
     if ((data[2] & 0x80u) != 0u) {
         /* Results outside the enum too: the core must answer motor fault. */
         int result = 1 + data[3] % (DARAN_RESULT_COUNT + 2);
@@ -301,5 +324,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             start = i + 1u;
         }
     }
+    FUZZ_LINE_END(&st.drive, &st.hal);
     return 0;
 }

@@ -5,14 +5,25 @@
 set(_fz ${CMAKE_CURRENT_LIST_DIR})
 set(_corpus ${PROJECT_SOURCE_DIR}/tests/corpus)
 
-foreach(h stream line number sim)
+# fuzz_port replays on the core compiled with the example port's options
+# header (port_core.cmake), with the example's command table.
+include(${_fz}/port_core.cmake)
+daran_port_core(daran_ascii_port_replay)
+
+foreach(h stream line number sim telemetry port)
   if(h STREQUAL "sim" AND NOT TARGET daran_sim_model)
     continue()
   endif()
   add_executable(fuzz_replay_${h} ${_fz}/fuzz_${h}.c ${_fz}/fuzz_hal.c ${_fz}/replay_main.c)
   target_include_directories(fuzz_replay_${h} PRIVATE ${PROJECT_SOURCE_DIR}/src ${_fz})
   target_compile_options(fuzz_replay_${h} PRIVATE -Wall -Wextra)
-  target_link_libraries(fuzz_replay_${h} PRIVATE daran_ascii m)
+  if(h STREQUAL "port")
+    target_sources(fuzz_replay_${h} PRIVATE ${DARAN_PORT_EXAMPLE_DIR}/brake_port.c)
+    target_include_directories(fuzz_replay_${h} PRIVATE ${DARAN_PORT_EXAMPLE_DIR})
+    target_link_libraries(fuzz_replay_${h} PRIVATE daran_ascii_port_replay m)
+  else()
+    target_link_libraries(fuzz_replay_${h} PRIVATE daran_ascii m)
+  endif()
   if(h STREQUAL "sim")
     target_link_libraries(fuzz_replay_${h} PRIVATE daran_sim_model)
   endif()
