@@ -140,6 +140,34 @@ def error_registers():
     return lines
 
 
+def port_brake_session():
+    """The example port (examples/port-brake): its command, its rows, the
+    rows it left out, discovery; for fuzz_port."""
+    lines = ["h 1", "h 1 properties axis0.brake", "h 1 properties axis0.encoder.",
+             "h 1 properties", "sb 1 20000", "SB 1 50000", "sb 0 12000", "sb 1 2.5e3",
+             "sb 1 0", "sb 1 -0", "sb 1 +50000.0", "sb 1 .5", "sb 1", "sb 1 1 2", "sb 1 x",
+             "sb 1 nan", "sb 1 60000", "sb 1 50000.004", "sb 1 1.5e39", "sb 1 -1", "sb 64 1",
+             "sb 2 1000", "sb 1.0 100", "r axis0.brake.temperature", "r axis1.brake.chopper_hz",
+             "w axis0.brake.chopper_hz 1500", "w axis1.brake.chopper_hz -1",
+             "w axis0.brake.temperature 20", "w axis0.brake.chopper_hz 60000",
+             "r axis0.encoder.pos_abs", "r axis0.encoder.turn_abs", "r axis0.encoder.spi_buff_0",
+             "r axis0.encoder.spi_buff_1", "w axis0.encoder.spi_buff_2 0",
+             "r axis0.encoder.pos_estimate", "t 1 90", "f 1", "st 1", "sc 1"]
+    return lines + with_checksums(lines[::3])
+
+
+def telemetry_session():
+    """Telemetry switched on, retuned and off between ordinary requests; for
+    fuzz_telemetry (and the others)."""
+    return ["w axis0.telemetry.period 0.005", "w axis0.telemetry.fields 511", "f 1", "t 1 90",
+            "r axis0.telemetry.period", "q 1 45 30 60", "w axis0.telemetry.period 0.0001",
+            "g 1", "w axis0.telemetry.fields 128", "e 1", "w axis0.telemetry.period 1e-9",
+            "w axis0.telemetry.fields 0", "h 1", "w axis0.telemetry.period 0.0125",
+            "w axis0.telemetry.fields 3", "w axis0.telemetry.period -1",
+            "w axis0.telemetry.fields 512", "r axis0.telemetry.fields", "i 1",
+            "w axis0.telemetry.period 0", "f 1"]
+
+
 def with_checksums(lines):
     out = []
     for l in lines:
@@ -165,6 +193,11 @@ def protocol_only(lines):
     return [l for l in lines if not l.startswith("!")]
 
 
+# The sessions that also seed fuzz_port and fuzz_telemetry.
+PORT_SESSIONS = {"port-brake", "spec", "tuning-checksum", "error-registers", "telemetry"}
+TELEMETRY_SESSIONS = {"telemetry", "telemetry-checksum", "tuning", "sync-move", "port-brake"}
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--shared", default="/work/shared")
@@ -182,6 +215,9 @@ def main():
     sessions["tuning-checksum"] = with_checksums(tuning_session())
     sessions["error-registers"] = error_registers()
     # relative starts from a setpoint near FLT_MAX must be refused, not overflow
+    sessions["port-brake"] = port_brake_session()
+    sessions["telemetry"] = telemetry_session()
+    sessions["telemetry-checksum"] = with_checksums(telemetry_session())
     sessions["relative-overflow"] = ["w axis1.output_shaft.pos_setpoint 3e38", "ms 1 3e38 0 25",
                                      "mt 1 1", "mp 1 1", "ms 1 -3e38 1 1", "mq 1 1", "f 1"]
 
@@ -207,6 +243,19 @@ def main():
         # sim: the session on 3 drives, directives kept
         simbody = "\n".join(l for l in lines if not l.startswith("!#")).encode("latin-1")
         write("sim", bytes([2]) + simbody[:16000] + b"\n!advance 1\nf 0\n")
+        # port: the line harness's layouts on the example port's drive
+        if name in PORT_SESSIONS:
+            write("port", bytes([0, 0, 0, 0]) + body[:4000])
+            write("port", bytes([1, 4, 0, 0]) + body[:4000])
+            write("port", bytes([0, 0, 0x81, 5]) + body[:2000])
+            write("port", bytes([0, 3, 0x60, 0]) + body[:2000])
+        # telemetry: 1 kHz from off, 8 kHz on from the start with every
+        # field, odd values and getter faults, 1 Hz, 0 Hz, bytes during ticks
+        if name in TELEMETRY_SESSIONS:
+            for flags, tick in ((0x00, 0), (0x09, 5), (0x39, 1000), (0x03, 7), (0x04, 0),
+                                (0xc0, 0xfffff000), (0x2e, 123456)):
+                write("telemetry", bytes([0, flags]) + struct.pack("<I", tick) +
+                      bytes([len(name), flags]) + body[:2000])
 
     if args.only:
         return
