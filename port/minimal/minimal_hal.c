@@ -6,6 +6,10 @@
 void minimal_drive_init(minimal_drive_t *drive)
 {
     memset(drive, 0, sizeof *drive);
+    for (size_t i = 0; i < MINIMAL_MOVE_WORDS; i++) {
+        atomic_init(&drive->move_words[i], 0u);
+    }
+    atomic_init(&drive->move_seq, 0u);
     drive->props[DARAN_PROP_CAN_NODE_ID].u32 = 1;
     drive->props[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
     drive->props[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
@@ -20,12 +24,39 @@ void minimal_drive_init(minimal_drive_t *drive)
 
 bool minimal_drive_take_move(minimal_drive_t *drive, daran_move_t *move)
 {
-    if (!drive->move_ready) {
-        return false;
+    uint32_t words[MINIMAL_MOVE_WORDS];
+    uint32_t seq = atomic_load_explicit(&drive->move_seq, memory_order_acquire);
+    if ((seq & 1u) != 0u || seq == drive->taken_seq) {
+        return false; /* being written (it preempted the writer), or nothing new */
     }
-    *move = drive->pending_move;
-    drive->move_ready = 0;
+    /* A word the writer stored after making the sequence odd (each word's
+     * store is a release) makes the sequence read below differ: acquire
+     * loads keep that read after the words. */
+    for (size_t i = 0; i < MINIMAL_MOVE_WORDS; i++) {
+        words[i] = atomic_load_explicit(&drive->move_words[i], memory_order_acquire);
+    }
+    if (atomic_load_explicit(&drive->move_seq, memory_order_relaxed) != seq) {
+        return false; /* a newer move came meanwhile: take that one next time */
+    }
+    drive->taken_seq = seq;
+    memcpy(move, words, sizeof *move);
     return true;
+}
+
+/* The main loop's side: publish a move, replacing one not yet taken (the
+ * control loop only ever wants the latest target). */
+static void post_move(minimal_drive_t *drive, const daran_move_t *request)
+{
+    uint32_t words[MINIMAL_MOVE_WORDS] = {0};
+    memcpy(words, request, sizeof *request);
+    uint32_t seq = atomic_load_explicit(&drive->move_seq, memory_order_relaxed);
+    atomic_store_explicit(&drive->move_seq, seq + 1u, memory_order_relaxed);
+    /* each word's release store keeps the odd number before it (no
+     * standalone fence: ThreadSanitizer checks orders on the atomics) */
+    for (size_t i = 0; i < MINIMAL_MOVE_WORDS; i++) {
+        atomic_store_explicit(&drive->move_words[i], words[i], memory_order_release);
+    }
+    atomic_store_explicit(&drive->move_seq, seq + 2u, memory_order_release);
 }
 
 static daran_result_t get(void *ctx, daran_prop_t prop, daran_value_t *out)
@@ -83,11 +114,7 @@ static daran_result_t move(void *ctx, const daran_move_t *request)
     default:
         return DARAN_ERR_INVALID_MODE; /* a kind this drive does not know: refuse, change nothing */
     }
-    /* Hand the move to the control loop. A newer move replaces one not yet
-     * taken: the control loop only ever wants the latest target. */
-    drive->move_ready = 0;
-    drive->pending_move = *request;
-    drive->move_ready = 1;
+    post_move(drive, request); /* to the control loop */
     return DARAN_OK;
 }
 

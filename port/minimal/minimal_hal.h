@@ -6,23 +6,35 @@
 #ifndef MINIMAL_HAL_H
 #define MINIMAL_HAL_H
 
+#include <stdatomic.h>
 #include <stdbool.h>
 #include <stdint.h>
 
 #include "daran_ascii.h"
 
+/* The mailbox holds a move as whole 32-bit words, each an atomic: a reader
+ * never sees half a store, and the sequence number tells it whether the
+ * words belong together (a sequence lock). C11 atomics on 32-bit words are
+ * plain loads and stores with barriers on every Cortex-M: no locks, no
+ * read-modify-write, so this works on a Cortex-M0 too. */
+#define MINIMAL_MOVE_WORDS ((sizeof(daran_move_t) + 3u) / 4u)
+
 typedef struct minimal_drive {
     daran_value_t props[DARAN_PROP_COUNT]; /* the live values of every property */
-    /* Mailbox from the protocol (main loop) to the control loop (interrupt). */
-    daran_move_t pending_move;
-    volatile uint8_t move_ready;
+    /* Mailbox from the protocol (main loop) to the control loop (interrupt):
+     * move_seq is odd while the main loop writes the words, and grows by 2
+     * per move. */
+    _Atomic uint32_t move_words[MINIMAL_MOVE_WORDS];
+    _Atomic uint32_t move_seq;
+    uint32_t taken_seq;                    /* the control loop's: the last move it took */
     uint32_t saved_config_writes;          /* stands in for the flash driver */
 } minimal_drive_t;
 
 /* Power-up defaults: id 1, closed loop, no flags. */
 void minimal_drive_init(minimal_drive_t *drive);
 
-/* The control loop's side: take the newest move, if any. */
+/* The control loop's side: take the newest move, if there is one it has not
+ * taken and the main loop is not writing it just now (then: next tick). */
 bool minimal_drive_take_move(minimal_drive_t *drive, daran_move_t *move);
 
 extern const daran_hal_t minimal_hal;
