@@ -70,6 +70,8 @@ typedef struct daran_rx_ring {
  * DARAN_FIELDS_MAX is the most fields a command has (d: word, id and 5
  * values) plus one to tell "too many". */
 #define DARAN_FIELDS_MAX 8u
+/* The values of an `ms` preset. */
+#define DARAN_PRESET_VALUES 3u
 #if DARAN_LINE_MAX <= 255
 typedef uint8_t daran_line_offset_t;
 #else
@@ -104,7 +106,7 @@ typedef struct daran_drive {
     uint8_t reply_checksum;  /* the current request carried a checksum field */
     uint8_t has_preset;
     uint8_t port_command_count;
-    float preset[3];
+    float preset[DARAN_PRESET_VALUES];
     daran_fields_t fields;
     char line[DARAN_LINE_MAX];
     char reply[DARAN_REPLY_MAX];

@@ -231,28 +231,45 @@ typedef enum daran_prop_type {
     DARAN_TYPE_BOOL  /**< 0 or 1 in member u32 */
 } daran_prop_type_t;
 
-/** What a written value must satisfy; the core checks it before the HAL's
- * set(). Float ranges apply to F32 properties, the others to integers. */
+/** @cond INTERNAL */
+#define DARAN_RANGE_STR_(x) #x
+#define DARAN_RANGE_STR(x) DARAN_RANGE_STR_(x)
+/** @endcond */
+
+/** The ranges: X(NAME, text). The text is what discovery prints and what
+ * `w` checks (src/property_table.c reads it): a sign condition (">=0",
+ * ">0", "<=0"), an interval ("a..b"), a set ("{a,b,...}" or "a|b", one
+ * value "a"), or "" for any value of the type. Float properties take the
+ * sign conditions only. */
+#define DARAN_RANGE_LIST(X) \
+    X(NONE,         "") \
+    X(NON_NEGATIVE, ">=0") \
+    X(POSITIVE,     ">0") \
+    X(NON_POSITIVE, "<=0") \
+    X(BOOL,         "0|1") \
+    X(ZERO,         "0") /* an error register: writing 0 clears it */ \
+    X(NODE_ID,      "1.." DARAN_RANGE_STR(DARAN_MOTOR_ID_MAX)) \
+    X(UART_BAUD,    "{9600,19200,38400,57600,115200}") \
+    X(CAN_BAUD,     "{125000,250000,500000,1000000}") \
+    X(CAN_PROTOCOL, "0..1") /* ODrive's CAN protocols: none, simple */ \
+    X(AXIS_STATE,   "{1,8}") /* DARAN_STATE_IDLE, DARAN_STATE_CLOSED_LOOP */ \
+    X(CONTROL_MODE, "1..3") /* ODrive: torque, velocity, position */ \
+    X(INPUT_MODE,   "{1,2,3,5,6,9}") /* ODrive's input modes the protocol uses */ \
+    X(TRAJ_MODE,    "1..2") /* trapezoid, S-curve */ \
+    X(DIRECTION,    "{-1,1}") \
+    X(MOTOR_TYPE,   "{0,2,3}") /* ODrive: high current, gimbal, ACIM */ \
+    X(POLE_PAIRS,   "1..128") \
+    X(TELEMETRY,    "0..511") /* the telemetry field bits */
+
+/** What a written value must satisfy (DARAN_RANGE_LIST); the core checks it
+ * before the HAL's set(). */
 typedef enum daran_range {
-    DARAN_RANGE_NONE,         /**< any finite value (any integer of the type) */
-    DARAN_RANGE_NON_NEGATIVE, /**< >= 0 */
-    DARAN_RANGE_POSITIVE,     /**< > 0 */
-    DARAN_RANGE_NON_POSITIVE, /**< <= 0 */
-    DARAN_RANGE_BOOL,         /**< 0 or 1 */
-    DARAN_RANGE_ZERO,         /**< only 0: an error register, cleared by writing 0 */
-    DARAN_RANGE_NODE_ID,      /**< 1..DARAN_MOTOR_ID_MAX */
-    DARAN_RANGE_UART_BAUD,    /**< 9600, 19200, 38400, 57600, 115200 */
-    DARAN_RANGE_CAN_BAUD,     /**< 125000, 250000, 500000, 1000000 */
-    DARAN_RANGE_CAN_PROTOCOL, /**< 0 none, 1 simple (ODrive's CAN protocols) */
-    DARAN_RANGE_AXIS_STATE,   /**< DARAN_STATE_IDLE or DARAN_STATE_CLOSED_LOOP */
-    DARAN_RANGE_CONTROL_MODE, /**< ODrive control modes 1 torque, 2 velocity, 3 position */
-    DARAN_RANGE_INPUT_MODE,   /**< ODrive input modes 1, 2, 3, 5, 6, 9 */
-    DARAN_RANGE_TRAJ_MODE,    /**< 1 trapezoid, 2 S-curve */
-    DARAN_RANGE_DIRECTION,    /**< -1 or 1 */
-    DARAN_RANGE_MOTOR_TYPE,   /**< ODrive motor types 0 high current, 2 gimbal, 3 ACIM */
-    DARAN_RANGE_POLE_PAIRS,   /**< 1..128 */
-    DARAN_RANGE_TELEMETRY,    /**< 0..511: the telemetry field bits */
-    DARAN_RANGE_COUNT         /**< how many ranges there are; not a range */
+/** @cond INTERNAL */
+#define DARAN_RANGE_ENUM_(name, text) DARAN_RANGE_##name,
+    DARAN_RANGE_LIST(DARAN_RANGE_ENUM_)
+#undef DARAN_RANGE_ENUM_
+/** @endcond */
+    DARAN_RANGE_COUNT /**< how many ranges there are; not a range */
 } daran_range_t;
 
 #endif /* DARAN_PROPERTIES_H */

@@ -37,7 +37,7 @@ enum handler {
 
 #if DARAN_ENABLE_MULTI_MOTOR
 #define MULTI_MOTION_COMMANDS(X)                                       \
-    X("ms", 5, 5, 0, 0, HANDLER_MS, "p1 p2 p3")                     \
+    X("ms", 2 + DARAN_PRESET_VALUES, 2 + DARAN_PRESET_VALUES, 0, 0, HANDLER_MS, "p1 p2 p3") \
     X("mt", 3, 3, 0, DARAN_SHAPE_T, HANDLER_START, "rel")           \
     X("mq", 3, 3, 0, DARAN_SHAPE_Q, HANDLER_START, "rel")           \
     X("mp", 3, 3, 0, DARAN_SHAPE_P, HANDLER_START, "rel")           \
@@ -73,6 +73,25 @@ enum handler {
 #define DARAN_COMMANDS(X)                                                  \
     SINGLE_MOTION_COMMANDS(X) MULTI_MOTION_COMMANDS(X)                     \
     PROPERTY_AND_SYSTEM_COMMANDS(X) HELP_COMMAND(X) QUERY_COMMANDS(X)
+
+/* What the dispatcher and the handlers take for granted, checked by the
+ * compiler: every command has its id and fits the field views with room to
+ * tell "too many" (the count saturates at DARAN_FIELDS_MAX); a motion
+ * command's values fit the handler's array and its shape; `w` has a value
+ * field; discovery's `h id properties prefix` fits. */
+#define FIELDS_WRONG(word, min, max, flags, arg, handler, help) \
+    | ((min) >= 2 && (min) <= (max) && (max) < DARAN_FIELDS_MAX ? 0 : 1)
+DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(FIELDS_WRONG)) == 0, command_field_counts_fit_the_fields);
+#undef FIELDS_WRONG
+#define MOTION_VALUES_WRONG(word, min, max, flags, arg, handler, help) \
+    | ((max) - 2 <= (int)DARAN_MOTION_VALUES_MAX ? 0 : 1)
+DARAN_STATIC_ASSERT((0 SINGLE_MOTION_COMMANDS(MOTION_VALUES_WRONG)) == 0,
+                    motion_values_fit_the_handler);
+#undef MOTION_VALUES_WRONG
+#define W_AND_H_WRONG(word, min, max, flags, arg, handler, help) \
+    | ((handler) == HANDLER_W && (min) < 3 ? 1 : 0) | ((handler) == HANDLER_H && (max) > 4 ? 1 : 0)
+DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(W_AND_H_WRONG)) == 0, w_has_a_value_and_h_at_most_a_prefix);
+#undef W_AND_H_WRONG
 
 #define COMMAND_ROW(word, min, max, flags, arg, handler, help) \
     {word, (uint8_t)((min) << 4 | (max)), flags, (uint8_t)(arg), handler},

@@ -16,7 +16,7 @@ enum check { CHECK_ANY, CHECK_POSITIVE, CHECK_NON_NEGATIVE, CHECK_MODE_VELOCITY,
 typedef struct motion_shape {
     uint8_t kind;      /* daran_move_kind_t */
     uint8_t count;     /* values after the id */
-    uint8_t value[5];  /* VALUE(slot, check) */
+    uint8_t value[DARAN_MOTION_VALUES_MAX]; /* VALUE(slot, check) */
 } motion_shape_t;
 
 static const motion_shape_t shapes[DARAN_SHAPE_COUNT] = {
@@ -166,7 +166,7 @@ daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *req
     daran_shape_t shape_id = (daran_shape_t)request->command->arg;
     const motion_shape_t *shape = &shapes[shape_id];
     uint8_t count = (uint8_t)(request->fields->count - 2u);
-    float values[5];
+    float values[DARAN_MOTION_VALUES_MAX];
     for (uint8_t i = 0; i < count; i++) {
         daran_field_t field = daran_field_at(request, 2u + i);
         daran_result_t result = parse_value(&field, CHECK_OF(shape->value[i]), &values[i]);

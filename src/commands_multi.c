@@ -15,7 +15,7 @@
 
 daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request)
 {
-    float values[3];
+    float values[DARAN_PRESET_VALUES];
     for (uint8_t i = 0; i < 3u; i++) {
         daran_field_t field = daran_field_at(request, 2u + i);
         daran_result_t result = daran_field_f32(&field, &values[i]);

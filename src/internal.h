@@ -9,6 +9,18 @@
 #include "daran_drive.h"
 #include "number.h"
 
+/* A condition the build must meet: a table edit that breaks a handler's
+ * assumption stops the compiler (C11 or a C99 negative array size). */
+#if defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L
+#define DARAN_STATIC_ASSERT(condition, what) _Static_assert(condition, #what)
+#else
+#define DARAN_STATIC_ASSERT(condition, what) \
+    typedef char daran_static_assert_##what[(condition) ? 1 : -1]
+#endif
+
+/* The most values a motion command (t q p v c d) has after its id. */
+#define DARAN_MOTION_VALUES_MAX 5u
+
 #if defined(__GNUC__) || defined(__clang__)
 #define DARAN_NOINLINE __attribute__((noinline))
 #else

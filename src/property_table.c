@@ -41,18 +41,11 @@ daran_property_t daran_property_row(daran_prop_t prop)
 }
 
 /* Every range as the text discovery prints, which is also what `w` checks
- * (daran_range_holds reads it): one source for both. NUL-separated, in
- * daran_range_t order. */
-#define DARAN_STR_(x) #x
-#define DARAN_STR(x) DARAN_STR_(x)
-static const char range_text[] =
-    "\0"                                   /* NONE: any value of the type */
-    ">=0\0" ">0\0" "<=0\0" "0|1\0" "0\0" /* NON_NEGATIVE POSITIVE NON_POSITIVE BOOL ZERO */
-    "1.." DARAN_STR(DARAN_MOTOR_ID_MAX) "\0"
-    "{9600,19200,38400,57600,115200}\0"
-    "{125000,250000,500000,1000000}\0"
-    "0..1\0" "{1,8}\0" "1..3\0" "{1,2,3,5,6,9}\0" "1..2\0" /* CAN_PROTOCOL .. TRAJ_MODE */
-    "{-1,1}\0" "{0,2,3}\0" "1..128\0" "0..511";              /* DIRECTION .. TELEMETRY */
+ * (daran_range_holds reads it): one source for both, NUL-separated in
+ * daran_range_t order because both come from DARAN_RANGE_LIST. */
+#define DARAN_RANGE_TEXT_(name, text) text "\0"
+static const char range_text[] = DARAN_RANGE_LIST(DARAN_RANGE_TEXT_);
+#undef DARAN_RANGE_TEXT_
 
 const char *daran_range_text(daran_range_t range)
 {

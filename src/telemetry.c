@@ -14,6 +14,10 @@ static const uint8_t field_props[] = {
     DARAN_PROP_MOTOR_TEMPERATURE, DARAN_PROP_AXIS_ERROR,      DARAN_PROP_TRAJECTORY_DONE,
 };
 #define FIELD_COUNT (sizeof field_props / sizeof field_props[0])
+/* every field fits daran_append_properties, and the range of
+ * axis0.telemetry.fields ("0..511") has one bit per field */
+DARAN_STATIC_ASSERT(FIELD_COUNT <= DARAN_APPEND_MAX, telemetry_fields_fit_one_append);
+DARAN_STATIC_ASSERT(FIELD_COUNT == 9u, telemetry_range_has_a_bit_per_field);
 
 bool daran_telemetry_fits(uint32_t fields)
 {
