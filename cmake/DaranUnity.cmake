@@ -18,6 +18,13 @@ if(NOT "${CMAKE_CURRENT_LIST_DIR}" IN_LIST CMAKE_MODULE_PATH)
 endif()
 find_package(Unity REQUIRED)
 
+# tests/support: the stub HAL (stub_hal.h) and float_bits.h every test program may use.
+if(NOT TARGET daran_test_support AND NOT CMAKE_CROSSCOMPILING)
+  add_library(daran_test_support STATIC ${PROJECT_SOURCE_DIR}/tests/support/stub_hal.c)
+  target_include_directories(daran_test_support PUBLIC ${PROJECT_SOURCE_DIR}/tests/support)
+  target_link_libraries(daran_test_support PUBLIC daran_ascii)
+endif()
+
 function(daran_add_unity_test name)
   if(CMAKE_CROSSCOMPILING)
     message(FATAL_ERROR "daran_add_unity_test(${name}): host programs only; "
@@ -27,7 +34,7 @@ function(daran_add_unity_test name)
     message(FATAL_ERROR "daran_add_unity_test(${name}): no source file given")
   endif()
   add_executable(${name} ${ARGN})
-  target_link_libraries(${name} PRIVATE daran_ascii unity::unity)
+  target_link_libraries(${name} PRIVATE daran_ascii unity::unity daran_test_support)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/src)
   add_test(NAME ${name} COMMAND ${name})
   set_tests_properties(${name} PROPERTIES FAIL_REGULAR_EXPRESSION "[1-9][0-9]* Failures")

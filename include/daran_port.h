@@ -51,7 +51,7 @@ typedef struct daran_port_command {
     uint8_t min_values;    /**< values after the id, at least */
     uint8_t max_values;    /**< and at most (<= DARAN_FIELDS_MAX - 3) */
     uint8_t flags;         /**< DARAN_PORT_COMMAND_QUERY or 0 */
-    daran_port_handler_fn handler;
+    daran_port_handler_fn handler; /**< called with the values after the id */
     const char *help;      /**< arguments after the id for `h` ("" when none) */
 } daran_port_command_t;
 
@@ -87,12 +87,16 @@ daran_result_t daran_args_mode(const daran_args_t *args, size_t index, uint32_t 
  * line end. Longer than DARAN_REPLY_MAX leaves is cut. */
 void daran_reply(daran_drive_t *drive, const char *payload, size_t len);
 
-/** Longest text of daran_format_float() / daran_format_uint(). */
+/** Longest text of daran_format_float(). */
 #define DARAN_FLOAT_TEXT_MAX 16
+/** Longest text of daran_format_uint(). */
 #define DARAN_UINT_TEXT_MAX 20
-/** The reply number format (shortest round-trip float32; decimal
- * integers) into @p buf, no NUL; returns the length. */
+/** A float32 in the reply number format (the shortest decimal that reads
+ * back to the same float) into buf[0..DARAN_FLOAT_TEXT_MAX), no NUL;
+ * returns the length. */
 size_t daran_format_float(float value, char *buf);
+/** An unsigned integer in decimal into buf[0..DARAN_UINT_TEXT_MAX), no NUL;
+ * returns the length. */
 size_t daran_format_uint(uint64_t value, char *buf);
 
 /** Telemetry (protocol.md 11.2). Call once per control tick, with the tick

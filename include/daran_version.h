@@ -8,9 +8,11 @@
 #define DARAN_VERSION_MINOR 1 /**< new features, compatible */
 #define DARAN_VERSION_PATCH 0 /**< fixes */
 
-/** "MAJOR.MINOR.PATCH" as a string literal. */
+/** @cond INTERNAL */
 #define DARAN_VERSION_TEXT_(a, b, c) #a "." #b "." #c
 #define DARAN_VERSION_TEXT_X_(a, b, c) DARAN_VERSION_TEXT_(a, b, c)
+/** @endcond */
+/** "MAJOR.MINOR.PATCH" as a string literal. */
 #define DARAN_VERSION_TEXT \
     DARAN_VERSION_TEXT_X_(DARAN_VERSION_MAJOR, DARAN_VERSION_MINOR, DARAN_VERSION_PATCH)
 

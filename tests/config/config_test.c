@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "daran_ascii.h"
+#include "stub_hal.h"
 
 #if DARAN_REPLY_CRLF
 #define LE "\r\n"
@@ -21,43 +22,8 @@
 static char replies[4096];
 static size_t replies_len;
 static unsigned reply_count;
-static uint32_t error_flags;
-
-static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
-{
-    (void)ctx;
-    out->u64 = 0;
-    if (prop == DARAN_PROP_CAN_NODE_ID) {
-        out->u32 = OWN_ID;
-    } else if (prop == DARAN_PROP_AXIS_ERROR) {
-        out->u32 = error_flags;
-    } else if (prop == DARAN_PROP_CURRENT_STATE) {
-        out->u32 = DARAN_STATE_CLOSED_LOOP;
-    }
-    return DARAN_OK;
-}
-
-static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
-{
-    (void)ctx;
-    (void)prop;
-    (void)value;
-    return DARAN_OK;
-}
-
-static daran_result_t hal_move(void *ctx, const daran_move_t *move)
-{
-    (void)ctx;
-    (void)move;
-    return DARAN_OK;
-}
-
-static daran_result_t hal_action(void *ctx, daran_action_t action)
-{
-    (void)ctx;
-    (void)action;
-    return DARAN_OK;
-}
+static daran_stub_t stub;
+#define error_flags (stub.values[DARAN_PROP_AXIS_ERROR].u32)
 
 static void on_reply(void *ctx, const char *line, size_t len)
 {
@@ -70,7 +36,6 @@ static void on_reply(void *ctx, const char *line, size_t len)
     reply_count++;
 }
 
-static const daran_hal_t hal = {hal_get, hal_set, hal_move, hal_action};
 static daran_drive_t drive;
 static unsigned passed;
 static unsigned failed;
@@ -87,8 +52,8 @@ static void check(int ok, const char *test, const char *detail)
 
 static void reset(void)
 {
-    error_flags = 0;
-    if (daran_init(&drive, &hal, NULL, on_reply, NULL) != DARAN_OK) {
+    daran_stub_init(&stub, OWN_ID);
+    if (daran_init(&drive, &daran_stub_hal, &stub, on_reply, NULL) != DARAN_OK) {
         printf("daran_init failed\n");
         exit(1);
     }
@@ -114,8 +79,11 @@ static void send_bytes(const char *bytes, size_t len)
 
 static void send(const char *line)
 {
-    char buf[64];
+    char buf[512];
     size_t len = strlen(line);
+    if (len + 1u > sizeof buf) {
+        len = sizeof buf - 1u; /* the tests send short lines; never past buf */
+    }
     memcpy(buf, line, len);
     buf[len] = '\n';
     send_bytes(buf, len + 1u);
@@ -134,7 +102,7 @@ static char *padded_query(size_t len)
 {
     static char line[DARAN_LINE_MAX + 2];
     memset(line, ' ', len);
-    memcpy(line, "e 1", 3);
+    memcpy(line, "r axis1.error", 13);
     line[len] = '\n';
     return line;
 }
@@ -195,17 +163,17 @@ static void test_line_one_byte_over_line_max_is_too_long(void)
 
 static void test_replies_end_with_the_configured_line_end(void)
 {
-    char line[16];
+    char line[32];
     char want[32];
     unsigned sum = 0;
     reset();
-    expect_reply("replies_end_with_the_configured_line_end", "e 1", "0" LE);
+    expect_reply("replies_end_with_the_configured_line_end", "r axis1.error", "0" LE);
     expect_reply("errors_end_with_the_configured_line_end", "x 1", "error: unknown command" LE);
     /* The checksum goes before the line end: "0 *N" where N is the XOR of "0 ". */
-    for (const char *c = "e 1"; *c != '\0'; c++) {
+    for (const char *c = "r axis1.error"; *c != '\0'; c++) {
         sum ^= (unsigned char)*c;
     }
-    snprintf(line, sizeof line, "e 1*%u", sum);
+    snprintf(line, sizeof line, "r axis1.error*%u", sum);
     snprintf(want, sizeof want, "0 *%u" LE, (unsigned)('0' ^ ' '));
     expect_reply("checksummed_reply_ends_with_the_configured_line_end", line, want);
 }
@@ -269,13 +237,43 @@ static void test_rx_ring_holds_exactly_its_size(void)
           replies);
 }
 
-static void test_longest_e_reply_fits_reply_max(void)
+static void test_longest_replies_fit_reply_max(void)
 {
+    /* `e` with every register at all ones, each line with its checksum */
+    static const char *const names[] = {"axis", "motor", "encoder", "controller",
+                                        "fet_thermistor", "motor_thermistor", "can"};
+    static const daran_prop_t registers[] = {
+        DARAN_PROP_AXIS_ERROR,       DARAN_PROP_MOTOR_ERROR,          DARAN_PROP_ENCODER_ERROR,
+        DARAN_PROP_CONTROLLER_ERROR, DARAN_PROP_FET_THERMISTOR_ERROR, DARAN_PROP_MOTOR_THERMISTOR_ERROR,
+        DARAN_PROP_CAN_ERROR};
+    char want[512];
+    size_t n = 0;
     reset();
-    error_flags = 0xFFFFFFFFu;
-    expect_reply("longest_e_reply_fits_reply_max", "e 1",
-                 "4294967295 estop watchdog motor_overtemp fet_overtemp undervoltage "
-                 "nvm_corrupt" LE);
+    for (size_t i = 0; i < sizeof registers / sizeof registers[0]; i++) {
+        char payload[64];
+        unsigned sum = 0;
+        stub.values[registers[i]].u32 = 0xFFFFFFFFu;
+        snprintf(payload, sizeof payload, "%s: 4294967295 ", names[i]);
+        for (const char *c = payload; *c != '\0'; c++) {
+            sum ^= (unsigned char)*c;
+        }
+        n += (size_t)snprintf(want + n, sizeof want - n, "%s*%u" LE, payload, sum);
+    }
+    unsigned line_sum = 0;
+    char line[16];
+    for (const char *c = "e 1"; *c != '\0'; c++) {
+        line_sum ^= (unsigned char)*c;
+    }
+    snprintf(line, sizeof line, "e 1*%u", line_sum);
+    expect_reply("longest_e_reply_fits_reply_max", line, want);
+#if DARAN_ENABLE_HELP && DARAN_LINE_MAX >= 80
+    /* the longest discovery line */
+    reset();
+    send("h 1 properties axis0.config.extra_setting.enable_circular_setpoint_limit");
+    check(strcmp(replies, "axis0.config.extra_setting.enable_circular_setpoint_limit bool rw - 0|1" LE
+                          "end" LE) == 0,
+          "longest_discovery_line_fits_reply_max", replies);
+#endif
 }
 
 static void test_instance_holds_its_buffers(void)
@@ -294,7 +292,7 @@ int main(int argc, char **argv)
     test_multi_motor_commands_follow_enable_multi_motor();
     test_motor_ids_stop_at_motor_id_max();
     test_rx_ring_holds_exactly_its_size();
-    test_longest_e_reply_fits_reply_max();
+    test_longest_replies_fit_reply_max();
     test_instance_holds_its_buffers();
     printf("config_test (LINE_MAX %d, RX_RING %d, REPLY_MAX %d, CRLF %d, ID_MAX %d, HELP %d, "
            "MULTI %d, sizeof(daran_drive_t) %u): %u passed, %u failed\n",

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "daran_ascii.h"
+#include "stub_hal.h"
 
 #if DARAN_REPLY_CRLF
 #define LINE_END "\r\n"
@@ -16,40 +17,7 @@
 
 static char reply[DARAN_REPLY_MAX + 1];
 
-static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
-{
-    (void)ctx;
-    if (prop == DARAN_PROP_CAN_NODE_ID) {
-        out->u32 = 1;
-    } else if (prop == DARAN_PROP_VBUS_VOLTAGE) {
-        out->f32 = 24.5f;
-    } else {
-        out->u64 = 0;
-    }
-    return DARAN_OK;
-}
-
-static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
-{
-    (void)ctx;
-    (void)prop;
-    (void)value;
-    return DARAN_OK;
-}
-
-static daran_result_t hal_move(void *ctx, const daran_move_t *move)
-{
-    (void)ctx;
-    (void)move;
-    return DARAN_OK;
-}
-
-static daran_result_t hal_action(void *ctx, daran_action_t action)
-{
-    (void)ctx;
-    (void)action;
-    return DARAN_OK;
-}
+static daran_stub_t stub;
 
 static void write_reply(void *ctx, const char *line, size_t len)
 {
@@ -61,7 +29,6 @@ static void write_reply(void *ctx, const char *line, size_t len)
     reply[len] = '\0';
 }
 
-static const daran_hal_t hal = {hal_get, hal_set, hal_move, hal_action};
 
 static int failed;
 
@@ -84,7 +51,9 @@ int main(void)
 
     /* daran_init() also compares this file's sizeof(daran_drive_t) with the
      * library's: built with other size options, it must refuse. */
-    daran_result_t init = daran_init(&drive, &hal, NULL, write_reply, NULL);
+    daran_stub_init(&stub, 1);
+    stub.values[DARAN_PROP_VBUS_VOLTAGE].f32 = 24.5f;
+    daran_result_t init = daran_init(&drive, &daran_stub_hal, &stub, write_reply, NULL);
     if (init != DARAN_OK) {
         printf("daran_init refused the instance: %s (sizeof(daran_drive_t) %u here)\n",
                daran_result_phrase(init), (unsigned)sizeof drive);

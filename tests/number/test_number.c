@@ -9,6 +9,8 @@
 
 #include "unity.h"
 
+#include "float_bits.h"
+
 #include "number.h"
 
 void setUp(void)
@@ -19,19 +21,6 @@ void tearDown(void)
 {
 }
 
-static uint32_t bits_of(float f)
-{
-    uint32_t b;
-    memcpy(&b, &f, sizeof b);
-    return b;
-}
-
-static float float_of(uint32_t b)
-{
-    float f;
-    memcpy(&f, &b, sizeof f);
-    return f;
-}
 
 /* The EXPECT_* checks are macros so that a failure names the line of the
  * test that made the check; the text under test is the failure message. */
@@ -43,7 +32,7 @@ static void expect_f32_at(UNITY_LINE_TYPE line, const char *text, uint32_t want)
     float f = 12345.0f;
     daran_result_t rc = daran_parse_f32(text, strlen(text), &f);
     UNITY_TEST_ASSERT_EQUAL_INT(DARAN_OK, rc, line, text);
-    UNITY_TEST_ASSERT_EQUAL_HEX32(want, bits_of(f), line, text);
+    UNITY_TEST_ASSERT_EQUAL_HEX32(want, daran_bits_of(f), line, text);
 }
 
 /* Parses text, expects the error and *out untouched. */
@@ -53,7 +42,7 @@ static void expect_f32_error_at(UNITY_LINE_TYPE line, const char *text, daran_re
     float f = 12345.0f;
     daran_result_t rc = daran_parse_f32(text, strlen(text), &f);
     UNITY_TEST_ASSERT_EQUAL_INT(want, rc, line, text);
-    UNITY_TEST_ASSERT_EQUAL_HEX32(bits_of(12345.0f), bits_of(f), line, text);
+    UNITY_TEST_ASSERT_EQUAL_HEX32(daran_bits_of(12345.0f), daran_bits_of(f), line, text);
 }
 
 #define EXPECT_U64(text, want) expect_u64_at(__LINE__, (text), (want))
@@ -102,30 +91,30 @@ static void expect_u64_text_at(UNITY_LINE_TYPE line, uint64_t value, const char 
 
 static void test_plain_integers_and_signs_are_accepted(void)
 {
-    EXPECT_F32("5", bits_of(5.0f));
-    EXPECT_F32("+5", bits_of(5.0f));
-    EXPECT_F32("-5", bits_of(-5.0f));
-    EXPECT_F32("000012", bits_of(12.0f));
+    EXPECT_F32("5", daran_bits_of(5.0f));
+    EXPECT_F32("+5", daran_bits_of(5.0f));
+    EXPECT_F32("-5", daran_bits_of(-5.0f));
+    EXPECT_F32("000012", daran_bits_of(12.0f));
 }
 
 static void test_point_forms_are_accepted(void)
 {
-    EXPECT_F32("5.", bits_of(5.0f));
-    EXPECT_F32(".5", bits_of(0.5f));
-    EXPECT_F32("-.5", bits_of(-0.5f));
-    EXPECT_F32("5.25", bits_of(5.25f));
-    EXPECT_F32("12.500000", bits_of(12.5f));
+    EXPECT_F32("5.", daran_bits_of(5.0f));
+    EXPECT_F32(".5", daran_bits_of(0.5f));
+    EXPECT_F32("-.5", daran_bits_of(-0.5f));
+    EXPECT_F32("5.25", daran_bits_of(5.25f));
+    EXPECT_F32("12.500000", daran_bits_of(12.5f));
 }
 
 static void test_exponent_forms_are_accepted(void)
 {
-    EXPECT_F32("5e3", bits_of(5000.0f));
-    EXPECT_F32("5E3", bits_of(5000.0f));
-    EXPECT_F32("5e+3", bits_of(5000.0f));
-    EXPECT_F32("5e-3", bits_of(0.005f));
-    EXPECT_F32(".5e1", bits_of(5.0f));
-    EXPECT_F32("5.e1", bits_of(50.0f));
-    EXPECT_F32("1e0000000000000000000000000000001", bits_of(10.0f));
+    EXPECT_F32("5e3", daran_bits_of(5000.0f));
+    EXPECT_F32("5E3", daran_bits_of(5000.0f));
+    EXPECT_F32("5e+3", daran_bits_of(5000.0f));
+    EXPECT_F32("5e-3", daran_bits_of(0.005f));
+    EXPECT_F32(".5e1", daran_bits_of(5.0f));
+    EXPECT_F32("5.e1", daran_bits_of(50.0f));
+    EXPECT_F32("1e0000000000000000000000000000001", daran_bits_of(10.0f));
 }
 
 static void test_empty_and_lone_signs_are_invalid(void)
@@ -174,9 +163,9 @@ static void test_length_bounds_the_text_not_a_nul(void)
 {
     float f = 0.0f;
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_parse_f32("12345", 2, &f));
-    TEST_ASSERT_EQUAL_HEX32(bits_of(12.0f), bits_of(f));
+    TEST_ASSERT_EQUAL_HEX32(daran_bits_of(12.0f), daran_bits_of(f));
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_parse_f32("1.5x", 3, &f));
-    TEST_ASSERT_EQUAL_HEX32(bits_of(1.5f), bits_of(f));
+    TEST_ASSERT_EQUAL_HEX32(daran_bits_of(1.5f), daran_bits_of(f));
     TEST_ASSERT_EQUAL_INT(DARAN_ERR_INVALID_VALUE, daran_parse_f32("5", 0, &f));
 }
 
@@ -184,13 +173,13 @@ static void test_length_bounds_the_text_not_a_nul(void)
 
 static void test_common_values_take_the_exact_float(void)
 {
-    EXPECT_F32("100.5", bits_of(100.5f));
-    EXPECT_F32("-0.02", bits_of(-0.02f));
-    EXPECT_F32("12", bits_of(12.0f));
+    EXPECT_F32("100.5", daran_bits_of(100.5f));
+    EXPECT_F32("-0.02", daran_bits_of(-0.02f));
+    EXPECT_F32("12", daran_bits_of(12.0f));
     EXPECT_F32("0.1", 0x3DCCCCCDu);
-    EXPECT_F32("1.4142135623730951", bits_of(1.41421356f));
-    EXPECT_F32("90.000000", bits_of(90.0f));
-    EXPECT_F32("-359.9999", bits_of(-359.9999f));
+    EXPECT_F32("1.4142135623730951", daran_bits_of(1.41421356f));
+    EXPECT_F32("90.000000", daran_bits_of(90.0f));
+    EXPECT_F32("-359.9999", daran_bits_of(-359.9999f));
 }
 
 static void test_integer_halfway_rounds_to_even(void)
@@ -228,16 +217,16 @@ static void test_long_digit_strings_use_every_digit(void)
     EXPECT_F32("1.00000005960464477539062500000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000001",
                0x3F800001u);
     EXPECT_F32("0.00000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000001e122",
-               bits_of(1.0f));
+               daran_bits_of(1.0f));
     EXPECT_F32("1000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000e-105",
-               bits_of(1.0f));
+               daran_bits_of(1.0f));
 }
 
 static void test_leading_zeros_do_not_count_as_digits(void)
 {
     EXPECT_F32("0000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000012.5",
-               bits_of(12.5f));
-    EXPECT_F32("0.0000000000000000000000000000000000000000000000000001e60", bits_of(1e8f));
+               daran_bits_of(12.5f));
+    EXPECT_F32("0.0000000000000000000000000000000000000000000000000001e60", daran_bits_of(1e8f));
 }
 
 static void test_subnormals_round_correctly(void)
@@ -313,12 +302,12 @@ static void test_a_million_zeros_are_only_zeros(void)
     memset(text, '0', 1000000);
     memcpy(text + 1000000, "1.5", 3);
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_parse_f32(text, 1000003, &f));
-    TEST_ASSERT_EQUAL_HEX32(bits_of(1.5f), bits_of(f));
+    TEST_ASSERT_EQUAL_HEX32(daran_bits_of(1.5f), daran_bits_of(f));
     text[0] = '.';
     memcpy(text + 1000000, "15e1000000", 10);
     n = 1000010;
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_parse_f32(text, n, &f));
-    TEST_ASSERT_EQUAL_HEX32(bits_of(1.5f), bits_of(f));
+    TEST_ASSERT_EQUAL_HEX32(daran_bits_of(1.5f), daran_bits_of(f));
     TEST_ASSERT_EQUAL_INT(DARAN_ERR_INVALID_VALUE, daran_parse_u64(text, n, &v)); /* 1.5 */
     memcpy(text + 1000000, "15e1000001", 10);
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_parse_u64(text, n, &v));
@@ -421,34 +410,34 @@ static void test_the_shortest_text_that_round_trips_is_chosen(void)
     EXPECT_TEXT(0.1f, "0.1");
     EXPECT_TEXT(1.0f / 3.0f, "0.33333334");
     EXPECT_TEXT(16777216.0f, "16777216");
-    EXPECT_TEXT(float_of(0x3F800001u), "1.0000001");
+    EXPECT_TEXT(daran_float_of(0x3F800001u), "1.0000001");
 }
 
 static void test_extremes_print(void)
 {
-    EXPECT_TEXT(float_of(0x7F7FFFFFu), "3.4028235e+38");
-    EXPECT_TEXT(float_of(0x00000001u), "1.0e-45");
-    EXPECT_TEXT(float_of(0x00800000u), "1.1754944e-38");
-    EXPECT_TEXT(float_of(0x007FFFFFu), "1.1754942e-38");
-    EXPECT_TEXT(float_of(0x80000001u), "-1.0e-45");
+    EXPECT_TEXT(daran_float_of(0x7F7FFFFFu), "3.4028235e+38");
+    EXPECT_TEXT(daran_float_of(0x00000001u), "1.0e-45");
+    EXPECT_TEXT(daran_float_of(0x00800000u), "1.1754944e-38");
+    EXPECT_TEXT(daran_float_of(0x007FFFFFu), "1.1754942e-38");
+    EXPECT_TEXT(daran_float_of(0x80000001u), "-1.0e-45");
 }
 
 static void test_powers_of_two_use_the_narrow_gap_below(void)
 {
-    EXPECT_TEXT(float_of(0x4C800000u), "67108864");  /* 2^26 */
-    EXPECT_TEXT(float_of(0x5F000000u), "9.223372e+18"); /* 2^63 */
-    EXPECT_TEXT(float_of(0x3A800000u), "0.0009765625");
+    EXPECT_TEXT(daran_float_of(0x4C800000u), "67108864");  /* 2^26 */
+    EXPECT_TEXT(daran_float_of(0x5F000000u), "9.223372e+18"); /* 2^63 */
+    EXPECT_TEXT(daran_float_of(0x3A800000u), "0.0009765625");
 }
 
 static void test_zero_nan_and_infinity_print_as_words(void)
 {
     EXPECT_TEXT(0.0f, "0");
     EXPECT_TEXT(-0.0f, "-0");
-    EXPECT_TEXT(float_of(0x7FC00000u), "nan");
-    EXPECT_TEXT(float_of(0xFFC00000u), "nan");
-    EXPECT_TEXT(float_of(0x7F800001u), "nan");
-    EXPECT_TEXT(float_of(0x7F800000u), "inf");
-    EXPECT_TEXT(float_of(0xFF800000u), "-inf");
+    EXPECT_TEXT(daran_float_of(0x7FC00000u), "nan");
+    EXPECT_TEXT(daran_float_of(0xFFC00000u), "nan");
+    EXPECT_TEXT(daran_float_of(0x7F800001u), "nan");
+    EXPECT_TEXT(daran_float_of(0x7F800000u), "inf");
+    EXPECT_TEXT(daran_float_of(0xFF800000u), "-inf");
 }
 
 static void test_longest_text_fits_the_buffer(void)
@@ -457,11 +446,11 @@ static void test_longest_text_fits_the_buffer(void)
     uint32_t b;
     size_t longest = 0;
     for (b = 0; b < 0xFF800000u; b += 0x00012345u) {
-        size_t n = daran_format_f32(float_of(b), buf);
+        size_t n = daran_format_f32(daran_float_of(b), buf);
         longest = n > longest ? n : longest;
     }
     TEST_ASSERT_LESS_OR_EQUAL_UINT(DARAN_F32_TEXT_MAX, longest);
-    EXPECT_TEXT(float_of(0xB74F0000u), "-0.0000123381615"); /* 16 characters */
+    EXPECT_TEXT(daran_float_of(0xB74F0000u), "-0.0000123381615"); /* 16 characters */
 }
 
 static void test_printed_text_parses_back_to_the_same_bits(void)
@@ -477,9 +466,9 @@ static void test_printed_text_parses_back_to_the_same_bits(void)
         if ((b & 0x7F800000u) == 0x7F800000u) {
             continue;
         }
-        n = daran_format_f32(float_of(b), buf);
+        n = daran_format_f32(daran_float_of(b), buf);
         TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_parse_f32(buf, n, &f));
-        TEST_ASSERT_EQUAL_HEX32(b, bits_of(f));
+        TEST_ASSERT_EQUAL_HEX32(b, daran_bits_of(f));
     }
 }
 

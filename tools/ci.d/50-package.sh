@@ -93,7 +93,7 @@ consumer_pkg_config() {
   [ "$(pkg-config --modversion daran_ascii)" = "$(sed -n "s/^#define DARAN_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\).*/\2/p" include/daran_version.h | paste -sd.)" ] || { echo "wrong --modversion"; return 1; }
   pkg-config --static --libs daran_ascii | grep -q -- -lm || { echo "no -lm in --static --libs"; return 1; }
   # shellcheck disable=SC2046  # the flags must split into words
-  cc -std=c99 -Wall -Wextra -Werror -o "$out" tests/consumer/consumer.c \
+  cc -std=c99 -Wall -Wextra -Werror -Itests/support -o "$out" tests/consumer/consumer.c tests/support/stub_hal.c \
     $(pkg-config --cflags --libs daran_ascii) &&
     "$out"
 }
@@ -128,7 +128,7 @@ consumer_mismatch_refused() {
   local prefix=$1 out=$2
   export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
   # shellcheck disable=SC2046
-  cc -std=c99 -Wall -Wextra -Werror -DDARAN_LINE_MAX=64 -o "$out" tests/consumer/consumer.c \
+  cc -std=c99 -Wall -Wextra -Werror -DDARAN_LINE_MAX=64 -Itests/support -o "$out" tests/consumer/consumer.c tests/support/stub_hal.c \
     $(pkg-config --cflags --libs daran_ascii) || return 1
   if "$out" >"$out.log" 2>&1; then
     echo "a consumer built with DARAN_LINE_MAX=64 ran against a 128 library"; return 1
@@ -151,13 +151,13 @@ step "consumer: pkg-config of the configured install agrees on DARAN_LINE_MAX 25
 
 step "config (a): defaults, and impossible options stop at #error" \
   config_suite a -DDARAN_TEST_OPTION_ERRORS=ON \
-  "-DDARAN_TEST_EXPECT=line_max=128;ring=128;reply_max=96;crlf=0;motor_id_max=63;help=1;multi=1"
-step "config (b): DARAN_LINE_MAX=64, DARAN_REPLY_CRLF=1, DARAN_ENABLE_HELP=0" \
-  config_suite b "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=64;DARAN_REPLY_CRLF=1;DARAN_ENABLE_HELP=0" \
-  "-DDARAN_TEST_EXPECT=line_max=64;crlf=1;help=0;multi=1;ring=128"
+  "-DDARAN_TEST_EXPECT=line_max=128;ring=128;reply_max=160;crlf=1;motor_id_max=63;help=1;multi=1"
+step "config (b): DARAN_LINE_MAX=64, DARAN_REPLY_CRLF=0, DARAN_ENABLE_HELP=0, the core as C99" \
+  config_suite b "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=64;DARAN_REPLY_CRLF=0;DARAN_ENABLE_HELP=0" \
+  -DDARAN_CORE_C_STANDARD=99 "-DDARAN_TEST_EXPECT=line_max=64;crlf=0;help=0;multi=1;ring=128"
 step "config (c): user header: no multi-motor, 32-byte ring, 256-byte lines" \
   config_suite c -DDARAN_CONFIG_HEADER="$repo/tests/config/config_c.h" \
-  "-DDARAN_TEST_EXPECT=line_max=256;ring=32;multi=0;help=1;crlf=0"
+  "-DDARAN_TEST_EXPECT=line_max=256;ring=32;multi=0;help=1;crlf=1"
 # The largest values daran_config.h allows: 16-bit ring and line indices at their edge.
 step "config (d): upper limits: 1024-byte lines and replies, 32768-byte ring, ids to 255" \
   config_suite d \
