@@ -1155,6 +1155,8 @@ void handwritten_init(handwritten_t *h, const daran_hal_t *hal, void *hal_ctx,
     h->reply_checksum = 0;
     h->has_preset = 0;
     h->reply_len = 0;
+    h->rx_len = 0;
+    h->rx_overflow = 0;
     if (!table_built) {
         build_table();
     }
@@ -1233,4 +1235,27 @@ daran_result_t handwritten_process_line(handwritten_t *h, const char *text, size
         (void)reply_error(h, result);
     }
     return result;
+}
+
+void handwritten_rx_write(handwritten_t *h, const char *data, size_t len)
+{
+    for (size_t i = 0; i < len; i++) {
+        char c = data[i];
+        if (c != '\n') {
+            if (h->rx_len < sizeof h->rx) {
+                h->rx[h->rx_len++] = c;
+            } else {
+                h->rx_overflow = 1;
+            }
+            continue;
+        }
+        if (h->rx_overflow) {
+            h->reply_checksum = 0;
+            (void)reply_error(h, DARAN_ERR_LINE_TOO_LONG);
+        } else {
+            (void)handwritten_process_line(h, h->rx, h->rx_len);
+        }
+        h->rx_len = 0;
+        h->rx_overflow = 0;
+    }
 }

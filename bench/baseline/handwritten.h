@@ -22,6 +22,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "daran_config.h"
 #include "daran_hal.h"
 #include "daran_result.h"
 
@@ -38,6 +39,9 @@ typedef struct handwritten {
     float preset[3];
     uint16_t reply_len;
     char reply[96];
+    uint16_t rx_len;        /* bytes of the line being received (handwritten_rx_write) */
+    uint8_t rx_overflow;    /* it grew past the line buffer */
+    char rx[DARAN_LINE_MAX];
 } handwritten_t;
 
 void handwritten_init(handwritten_t *h, const daran_hal_t *hal, void *hal_ctx,
@@ -47,6 +51,12 @@ void handwritten_init(handwritten_t *h, const daran_hal_t *hal, void *hal_ctx,
  * DARAN_OK when the line was executed, blank or for another drive, else the
  * error answered. */
 daran_result_t handwritten_process_line(handwritten_t *h, const char *text, size_t len);
+
+/* The byte path as such firmware writes it: append the bytes to a line
+ * buffer (the receive interrupt's job), run each line at its '\n' (the main
+ * loop's job), both here in one call. A line longer than the buffer is
+ * answered `line too long`. */
+void handwritten_rx_write(handwritten_t *h, const char *data, size_t len);
 
 /* The property lookup alone (hash, probe, one comparison), exposed so the
  * benchmark can count it: scope 0 system, 1 axis. DARAN_PROP_COUNT when the

@@ -8,6 +8,7 @@
  *         ours-poll  daran_rx_write() + daran_poll() per line (the byte path)
  *         baseline   baseline_process_line() per line (the sscanf/printf yardstick)
  *         handwritten handwritten_process_line() per line (the hand-written yardstick)
+ *         handwritten-bytes handwritten_rx_write() of the line and its '\n'
  *         none       everything but the parser: reading, splitting, looping
  *         respell    no parsing: print the stream with every number the
  *                    hand-written yardstick rounds differently from a
@@ -184,7 +185,7 @@ static void respell(const char *line, size_t len, FILE *out)
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: bench_driver ours|ours-poll|baseline|handwritten|none|respell [--trace] [--repeat N] "
+    fprintf(stderr, "usage: bench_driver ours|ours-poll|baseline|handwritten|handwritten-bytes|none|respell [--trace] [--repeat N] "
                     "(STREAM | --line TEXT)\n");
     return 2;
 }
@@ -259,6 +260,11 @@ int main(int argc, char **argv)
             } else if (strcmp(mode, "handwritten") == 0) {
                 errors += handwritten_process_line(&handwritten, lines[i].text, lines[i].len) !=
                           DARAN_OK;
+            } else if (strcmp(mode, "handwritten-bytes") == 0) {
+                char *end = (char *)lines[i].text + lines[i].len;
+                *end = '\n';
+                handwritten_rx_write(&handwritten, lines[i].text, lines[i].len + 1);
+                *end = '\0';
             } else if (strcmp(mode, "ours-poll") == 0) {
                 /* The line and its '\n' through the ring, in pieces the ring can hold. */
                 const char *p = lines[i].text;
