@@ -106,6 +106,7 @@ typedef struct daran_drive {
     uint8_t reply_checksum;  /* the current request carried a checksum field */
     uint8_t has_preset;
     uint8_t port_command_count;
+    uint8_t telemetry_due;   /* 1: no report scheduled yet, the next tick reports */
     float preset[DARAN_PRESET_VALUES];
     daran_fields_t fields;
     char line[DARAN_LINE_MAX];

@@ -20,6 +20,7 @@ daran_result_t daran_init_sized(daran_drive_t *drive, size_t drive_size, const d
     drive->hal_ctx = hal_ctx;
     drive->write = write;
     drive->write_ctx = write_ctx;
+    drive->telemetry_due = 1;
     daran_framer_reset(drive);
     return DARAN_OK;
 }

@@ -41,12 +41,14 @@ daran_result_t daran_telemetry_tick(daran_drive_t *drive, uint32_t tick, uint32_
     daran_value_t period;
     daran_result_t result = daran_get(drive, DARAN_PROP_TELEMETRY_PERIOD, &period);
     if (result != DARAN_OK || !(period.f32 > 0.0f) || tick_hz == 0u) {
-        drive->telemetry_next = tick; /* switched on, it reports at once */
+        drive->telemetry_due = 1; /* switched on, it reports at once */
         return result;
     }
-    if ((int32_t)(tick - drive->telemetry_next) < 0) {
+    /* the first tick with telemetry on reports, whatever the tick count */
+    if (!drive->telemetry_due && (int32_t)(tick - drive->telemetry_next) < 0) {
         return DARAN_OK;
     }
+    drive->telemetry_due = 0;
     /* the period in whole ticks, at least one, at most about 23 days at 1 kHz */
     float ticks = period.f32 * (float)tick_hz + 0.5f;
     drive->telemetry_next = tick + (ticks < 1.0f ? 1u : (ticks > 2.0e9f ? 2000000000u : (uint32_t)ticks));

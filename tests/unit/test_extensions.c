@@ -479,6 +479,19 @@ static void test_switching_telemetry_on_reports_at_the_next_tick(void)
     TEST_ASSERT_EQUAL_INT(0, strncmp(m->out, "@1 0.05 ", 8));
 }
 
+static void test_the_first_tick_reports_whatever_the_tick_count(void)
+{
+    /* a port whose counter is far from 0 when telemetry is first on */
+    static const uint32_t starts[] = {0x80000000u, 0xFFFFFFF0u, 0x7FFFFF00u, 12345u};
+    for (size_t i = 0; i < sizeof starts / sizeof starts[0]; i++) {
+        mock_t *m = telemetry_mock(0.01f, 1);
+        for (uint32_t k = 0; k < 100; k++) {
+            (void)daran_telemetry_tick(&m->drive, starts[i] + k, 1000);
+        }
+        TEST_ASSERT_EQUAL_UINT_MESSAGE(10, m->n_writes, "reports in 100 ticks of 1 ms at 10 ms");
+    }
+}
+
 static void test_a_failing_read_skips_the_report_and_says_why(void)
 {
     mock_t *m = telemetry_mock(0.001f, 3);
@@ -532,6 +545,7 @@ int main(void)
     RUN_TEST(test_a_report_has_the_id_the_time_and_the_fields_in_bit_order_with_a_checksum);
     RUN_TEST(test_reports_come_every_period_rounded_to_whole_ticks);
     RUN_TEST(test_switching_telemetry_on_reports_at_the_next_tick);
+    RUN_TEST(test_the_first_tick_reports_whatever_the_tick_count);
     RUN_TEST(test_a_failing_read_skips_the_report_and_says_why);
     RUN_TEST(test_a_report_keeps_the_request_checksum_state_of_replies);
     RUN_TEST(test_telemetry_settings_are_written_with_their_ranges);
