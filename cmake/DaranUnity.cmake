@@ -10,7 +10,8 @@
 # cases, and CTest also fails the test whenever Unity's summary line counts a
 # failure (an exit status of 256 failures would otherwise read as 0).
 # Host only: a target test image also needs a startup, a linker script and
-# daran_test_putchar() (see tests/support/unity_config.h).
+# daran_test_putchar() (see tests/support/unity_config.h); the cortex-m4 build
+# makes its images with daran_target_unity_image() in tests/target/CMakeLists.txt.
 include_guard(GLOBAL)
 
 if(NOT "${CMAKE_CURRENT_LIST_DIR}" IN_LIST CMAKE_MODULE_PATH)

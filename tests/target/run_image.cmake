@@ -16,6 +16,7 @@ execute_process(COMMAND ${_qemu} -kernel ${ELF}
                 RESULT_VARIABLE _status)
 message("QEMU exit status ${_status}")
 if(NOT _status STREQUAL "0")
-  message(FATAL_ERROR "the image failed (exit status ${_status}: Unity's failure count, "
-                      "3 = fault, 4 = main() returned in a firmware image)")
+  message(FATAL_ERROR "the image failed (exit status ${_status}): after Unity's summary "
+                      "line it is the failure count (at most 255); without one, the run "
+                      "stopped early (3: a fault, the default exception handler)")
 endif()
