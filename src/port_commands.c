@@ -35,6 +35,30 @@ static const daran_port_command_t *find_in(const daran_port_command_t *commands,
     return NULL;
 }
 
+#if !DARAN_ENABLE_HELP || !DARAN_ENABLE_MULTI_MOTOR
+/* The vendor's words whose commands an option compiled out stay reserved:
+ * the vendor's tools still send them, and must never reach a port's handler. */
+static bool compiled_out_vendor_word(const daran_field_t *word)
+{
+    static const char words[][3] = {
+#if !DARAN_ENABLE_HELP
+        "h",
+#endif
+#if !DARAN_ENABLE_MULTI_MOTOR
+        "ms", "mt", "mq", "mp", "mv", "mc",
+#endif
+    };
+    for (size_t i = 0; i < sizeof words / sizeof words[0]; i++) {
+        if (words[i][0] == word->text[0] && words[i][1] == (word->len == 2u ? word->text[1] : '\0')) {
+            return word->len <= 2u;
+        }
+    }
+    return false;
+}
+#else
+#define compiled_out_vendor_word(word) false
+#endif
+
 daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_command_t *commands,
                                        size_t count, void *ctx)
 {
@@ -50,7 +74,8 @@ daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_co
         /* a word of lower-case letters, no vendor's, not twice */
         if (word.len == 0u || c->handler == NULL || c->help == NULL ||
             c->min_values > c->max_values || c->max_values > DARAN_FIELDS_MAX - 3u ||
-            daran_find_command(&word) != NULL || find_in(commands, i, &word) != NULL) {
+            daran_find_command(&word) != NULL || compiled_out_vendor_word(&word) ||
+            find_in(commands, i, &word) != NULL) {
             return DARAN_ERR_BAD_ARGUMENT;
         }
     }

@@ -39,6 +39,7 @@ static const prop_row_t rows[] = {DARAN_PROPERTY_LIST(ROW)};
 #undef ROW
 #define N_ROWS (sizeof rows / sizeof rows[0])
 
+#if DARAN_ENABLE_HELP
 /* The discovery line of a row, as protocol.md 11.1 writes it. */
 static void expected_line(const prop_row_t *p, char *buf, size_t size)
 {
@@ -157,6 +158,15 @@ static void test_help_shows_the_discovery_form_of_h(void)
     mock_send_line(m, "h 1");
     TEST_ASSERT_NOT_NULL(strstr(m->out, "\nh id [properties [prefix]]\n"));
 }
+#else
+static void test_without_help_h_and_discovery_are_unknown_commands(void)
+{
+    mock_t *m = mock_new();
+    ASSERT_ERROR(m, "h 1", "unknown command");
+    ASSERT_ERROR(m, "h 1 properties", "unknown command");
+    ASSERT_ERROR(m, "h 1 properties axis0.", "unknown command");
+}
+#endif
 
 /* ---- the port's own commands ---- */
 
@@ -328,6 +338,7 @@ static void test_a_port_query_replies_through_daran_reply_with_the_request_check
     ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "0 1 1 0.1", true));
 }
 
+#if DARAN_ENABLE_HELP
 static void test_help_lists_the_port_commands_after_the_core_s(void)
 {
     mock_t *m = port_mock();
@@ -336,6 +347,7 @@ static void test_help_lists_the_port_commands_after_the_core_s(void)
     TEST_ASSERT_NOT_NULL(tail);
     TEST_ASSERT_EQUAL_STRING("u id\nsb id hz\nbq id [k]\nbu id n\n", tail);
 }
+#endif
 
 static void test_a_bad_port_table_is_refused_whole_and_the_drive_keeps_its_own(void)
 {
@@ -527,18 +539,24 @@ static void test_telemetry_settings_are_written_with_their_ranges(void)
 int main(void)
 {
     UNITY_BEGIN();
+#if DARAN_ENABLE_HELP
     RUN_TEST(test_discovery_lists_every_property_once_in_path_order_then_end);
     RUN_TEST(test_discovery_with_a_prefix_lists_only_the_paths_that_start_with_it);
     RUN_TEST(test_discovery_of_a_prefix_no_path_has_answers_end_alone);
     RUN_TEST(test_checksummed_discovery_gets_a_checksum_on_every_line);
     RUN_TEST(test_discovery_refuses_another_word_and_extra_fields);
     RUN_TEST(test_help_shows_the_discovery_form_of_h);
+#else
+    RUN_TEST(test_without_help_h_and_discovery_are_unknown_commands);
+#endif
     RUN_TEST(test_a_port_command_runs_its_handler_with_the_parsed_values);
     RUN_TEST(test_bad_port_command_lines_get_the_library_errors_and_no_call);
     RUN_TEST(test_a_handler_error_is_answered_with_its_phrase);
     RUN_TEST(test_port_commands_are_addressed_like_the_core_s);
     RUN_TEST(test_a_port_query_replies_through_daran_reply_with_the_request_checksum);
+#if DARAN_ENABLE_HELP
     RUN_TEST(test_help_lists_the_port_commands_after_the_core_s);
+#endif
     RUN_TEST(test_a_bad_port_table_is_refused_whole_and_the_drive_keeps_its_own);
     RUN_TEST(test_args_parsers_refuse_an_index_past_the_values);
     RUN_TEST(test_telemetry_is_off_by_default_and_costs_one_get_per_tick);
