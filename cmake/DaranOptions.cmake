@@ -30,4 +30,5 @@ endfunction()
 
 option(DARAN_BUILD_FUZZ "Build the libFuzzer harnesses (clang only)" OFF)
 option(DARAN_BUILD_BENCH "Build the benchmarks" ${_daran_top_level})
-option(DARAN_BUILD_FIRMWARE "Cross builds: build the example firmware and its QEMU tests" ON)
+option(DARAN_BUILD_FIRMWARE "Cross builds: build the example firmware and its QEMU tests" ${_daran_top_level})
+option(DARAN_STACK_USAGE "Write the core's frame sizes and call graph (-fstack-usage -fcallgraph-info, GCC 12+) for a stack budget" OFF)
