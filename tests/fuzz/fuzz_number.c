@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "float_bits.h"
 #include "fuzz_hal.h"
 #include "number.h"
 
@@ -85,13 +86,6 @@ static bool grammar(const char *s, size_t n, parsed_t *p)
     return i == n;
 }
 
-static uint32_t bits(float f)
-{
-    uint32_t b;
-    memcpy(&b, &f, sizeof b);
-    return b;
-}
-
 static void test_parse_f32(const char *s, size_t n)
 {
     parsed_t p;
@@ -99,7 +93,7 @@ static void test_parse_f32(const char *s, size_t n)
     float out = 12345.0f;
     daran_result_t r = daran_parse_f32(s, n, &out);
     if (!ok) {
-        FUZZ_CHECK(r == DARAN_ERR_INVALID_VALUE && bits(out) == bits(12345.0f),
+        FUZZ_CHECK(r == DARAN_ERR_INVALID_VALUE && daran_bits_of(out) == daran_bits_of(12345.0f),
                    "parse_f32(\"%s\") = %d, want invalid value, *out untouched", fuzz_escape(s, n),
                    (int)r);
         return;
@@ -109,13 +103,13 @@ static void test_parse_f32(const char *s, size_t n)
     z[n] = '\0';
     float want = strtof(z, NULL);
     if (isinf(want)) {
-        FUZZ_CHECK(r == DARAN_ERR_OUT_OF_RANGE && bits(out) == bits(12345.0f),
+        FUZZ_CHECK(r == DARAN_ERR_OUT_OF_RANGE && daran_bits_of(out) == daran_bits_of(12345.0f),
                    "parse_f32(\"%s\") = %d, want value out of range", z, (int)r);
         return;
     }
-    FUZZ_CHECK(r == DARAN_OK && bits(out) == bits(want),
+    FUZZ_CHECK(r == DARAN_OK && daran_bits_of(out) == daran_bits_of(want),
                "parse_f32(\"%s\") = %d, %08" PRIx32 " (%.9g); strtof %08" PRIx32 " (%.9g)", z,
-               (int)r, bits(out), (double)out, bits(want), (double)want);
+               (int)r, daran_bits_of(out), (double)out, daran_bits_of(want), (double)want);
 }
 
 /* The exact value of a grammatical text as an integer, if it is one. */
@@ -270,7 +264,7 @@ static bool shorter_exists(float v, size_t q)
         }
         char cand[64];
         snprintf(cand, sizeof cand, "%s%llde%ld", buf[0] == '-' ? "-" : "", d, ex);
-        if (bits(strtof(cand, NULL)) == bits(v)) {
+        if (daran_bits_of(strtof(cand, NULL)) == daran_bits_of(v)) {
             return true;
         }
     }
@@ -279,8 +273,7 @@ static bool shorter_exists(float v, size_t q)
 
 static void test_format_f32(uint32_t b)
 {
-    float v;
-    memcpy(&v, &b, sizeof v);
+    float v = daran_float_of(b);
     char t[DARAN_F32_TEXT_MAX + 8];
     memset(t, 'Z', sizeof t);
     size_t n = daran_format_f32(v, t);
@@ -307,12 +300,12 @@ static void test_format_f32(uint32_t b)
     check_notation(t, n, v);
 
     float back = 0.0f;
-    FUZZ_CHECK(daran_parse_f32(t, n, &back) == DARAN_OK && bits(back) == b,
+    FUZZ_CHECK(daran_parse_f32(t, n, &back) == DARAN_OK && daran_bits_of(back) == b,
                "format_f32(%08" PRIx32 ") = \"%s\" does not parse back", b, fuzz_escape(t, n));
     char z[DARAN_F32_TEXT_MAX + 1];
     memcpy(z, t, n);
     z[n] = '\0';
-    FUZZ_CHECK(bits(strtof(z, NULL)) == b, "strtof(\"%s\") is not %08" PRIx32, z, b);
+    FUZZ_CHECK(daran_bits_of(strtof(z, NULL)) == b, "strtof(\"%s\") is not %08" PRIx32, z, b);
 
     size_t digits = significant_digits(t, n);
     FUZZ_CHECK(digits >= 1u && digits <= 9u, "\"%s\" has %zu digits", z, digits);
