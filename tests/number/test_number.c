@@ -126,6 +126,21 @@ static void test_empty_and_lone_signs_are_invalid(void)
     EXPECT_F32_ERROR("-.", DARAN_ERR_INVALID_VALUE);
 }
 
+static void test_missing_text_or_result_is_a_bad_argument(void)
+{
+    float f = 7.0f;
+    uint64_t u = 7u;
+    /* no text and no length is the empty field; no text with a length is a caller's bug */
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_INVALID_VALUE, daran_parse_f32(NULL, 0, &f));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_INVALID_VALUE, daran_parse_u64(NULL, 0, &u));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_parse_f32(NULL, 3, &f));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_parse_u64(NULL, 3, &u));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_parse_f32("1", 1, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_parse_u64("1", 1, NULL));
+    TEST_ASSERT_EQUAL_UINT32(daran_bits_of(7.0f), daran_bits_of(f)); /* refused: untouched */
+    TEST_ASSERT_EQUAL_UINT64(7u, u);
+}
+
 static void test_broken_exponents_are_invalid(void)
 {
     EXPECT_F32_ERROR("e5", DARAN_ERR_INVALID_VALUE);
@@ -524,6 +539,7 @@ int main(void)
     RUN_TEST(test_point_forms_are_accepted);
     RUN_TEST(test_exponent_forms_are_accepted);
     RUN_TEST(test_empty_and_lone_signs_are_invalid);
+    RUN_TEST(test_missing_text_or_result_is_a_bad_argument);
     RUN_TEST(test_broken_exponents_are_invalid);
     RUN_TEST(test_words_and_hex_are_invalid);
     RUN_TEST(test_stray_characters_are_invalid);
