@@ -27,6 +27,9 @@ def fmt(x):
 def verdict(measured, goal):
     if measured <= goal:
         return "met (%s to spare)" % fmt(goal - measured)
+    if measured < 1.5 * goal:
+        return "**missed** by %s (%.1f%% over)" % (fmt(measured - goal),
+                                                   100.0 * (measured - goal) / goal)
     return "**missed** by %s (%.1fx the goal)" % (fmt(measured - goal), measured / goal)
 
 

@@ -59,6 +59,10 @@ cat "$results/m0.md"
 
 python3 bench/host/update_docs.py docs/performance.md m4insns="$results/m4insns.md" m0="$results/m0.md"
 if [ -f "$results/host.json" ]; then
-  python3 bench/summary.py "$results" >"$results/summary.md"
-  python3 bench/host/update_docs.py docs/performance.md summary="$results/summary.md"
+  if python3 bench/summary.py "$results" >"$results/summary.md.new"; then
+    mv "$results/summary.md.new" "$results/summary.md"
+    python3 bench/host/update_docs.py docs/performance.md summary="$results/summary.md"
+  else
+    echo "summary: not rewritten (the other script's results are missing or older; run it)"
+  fi
 fi

@@ -68,8 +68,12 @@ python3 bench/host/update_docs.py docs/performance.md host="$results/host.md" \
   rounding="$results/rounding.md" m4="$results/m4.md"
 
 if [ -f "$results/m4insns.json" ] && [ -f "$results/m0.json" ]; then
-  python3 bench/summary.py "$results" >"$results/summary.md"
-  python3 bench/host/update_docs.py docs/performance.md summary="$results/summary.md"
+  if python3 bench/summary.py "$results" >"$results/summary.md.new"; then
+    mv "$results/summary.md.new" "$results/summary.md"
+    python3 bench/host/update_docs.py docs/performance.md summary="$results/summary.md"
+  else
+    echo "summary: not rewritten (the other script's results are missing or older; run it)"
+  fi
 fi
 
 echo "== done: $results/host.md, $results/rounding.md, $results/m4.md, docs/bench-host-*.png"
