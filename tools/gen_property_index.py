@@ -7,18 +7,27 @@ rows out (--omit) without editing it.
 
 What it writes, for src/property_table.c:
   - every word of every path once (the parts between '.' and '_':
-    "output", "shaft", "pos", "setpoint"), plain bytes, with its end offset;
-  - per property: its path as word numbers, one bit per separator ('.' or
-    '_') and one 16-bit attribute word (type, access, scope, range, unit), so
-    `r`, `w` and discovery read one row. Words are shared by many paths:
-    this is about 600 bytes smaller than whole dot-separated segments;
-  - a perfect hash of the paths (hash-and-displace): one FNV-1a pass over the
-    path's bytes picks a bucket, the bucket's displacement picks the slot,
-    the slot names the only property the path can be, and one comparison of
-    its words decides. O(path length), independent of the row count.
+    "output", "shaft", "pos", "setpoint"), sorted, packed 5 bits a character
+    with no terminators, and where each word ends (10 bits: a low byte, and
+    two high bits four words to a byte);
+  - per property: its path as word numbers (one byte each), where that list
+    starts (10 bits), one bit per separator ('.' or '_') and one 16-bit
+    attribute word (type, access, scope, range, unit), so `r`, `w` and
+    discovery read one row. Words are shared by many paths (this saved about
+    600 bytes of flash against whole dot-separated segments when it came in);
+  - a perfect hash of the paths (hash-and-displace): the key is the path's
+    bytes and its scope, with no fixed width; one FNV-1a pass (32-bit state)
+    over them picks a bucket, the bucket's displacement picks the slot, the
+    slot names the only property the path can be, and one comparison of its
+    words decides. O(path length), independent of the row count;
+  - the order discovery lists the rows in, when it is not the id order.
+
+With --config, the port's options header adds its DARAN_PORT_PROPERTY_LIST
+rows and leaves out its DARAN_OMIT_PROPERTIES; --omit (the CMake list
+DARAN_PROPERTY_OMIT) leaves out more.
 
 Usage: gen_property_index.py --list include/daran_properties.h --out FILE
-                             [--omit ID,ID,...] [--stats]
+                             [--config OPTIONS_HEADER] [--omit ID,ID,...] [--stats]
 """
 import argparse
 import re
