@@ -121,10 +121,9 @@ def own_and_pulled(image, own):
     return parts[image].get(own, 0), pulled
 
 
-goal = 8192  # the first contract's goal: core flash <= 8 KiB
 # The budget CTest enforces (budget_core_flash), raised with the vendor's
 # whole property table (97424e3): read from where the cortex-m4 build sets it.
-budget = goal
+budget = 0
 try:
     with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests",
                            "target", "CMakeLists.txt")) as f:
@@ -139,24 +138,21 @@ hand_own, hand_pulled = own_and_pulled("handwritten", "handwritten")
 core_total = core_own + core_pulled
 nohelp_own, nohelp_pulled = own_and_pulled("daran-nohelp", "core-nohelp")
 print()
-if budget != goal:
-    headline = ("**Core flash budget (CTest budget_core_flash) <= %d bytes: %s.** (The first "
-                "goal, <= %d bytes: %s.)" % (
-                    budget, "met" if core_total <= budget else
-                    "missed by %d bytes" % (core_total - budget), goal,
-                    "met" if core_total <= goal else "missed by %d bytes" % (core_total - goal)))
-else:
-    headline = "**Goal: core flash <= %d bytes: %s.**" % (
-        budget, "met" if core_total <= budget else "missed by %d bytes" % (core_total - budget))
+# budget_core_flash counts the whole library (every object, text + data); an
+# image keeps less after --gc-sections (what this image does not call goes),
+# so this is a report on the linked image, not the budget's verdict.
+headline = ("**In this minimal image the core keeps %d bytes** (%s the %d of CTest "
+            "budget_core_flash, which counts the whole library before --gc-sections: "
+            "see the summary)." % (core_own + core_pulled,
+                                   "within" if core_own + core_pulled <= budget else "over",
+                                   budget))
 print(headline + " The core's objects (src/) take %d bytes and pull "
-      "%d bytes from the libraries: %d in all (%s); the baseline's take %d and pull %d: %d in "
+      "%d bytes from the libraries: %d in all; the baseline's take %d and pull %d: %d in "
       "all, %.1fx the core; the hand-written yardstick's take %d and pull %d: %d in all. "
       "Without the help text (DARAN_ENABLE_HELP=0) the core is %d in all. "
       "Whole images over the empty one (trivial HAL and glue included): "
       "%d (daran), %d (daran, no help text), %d (baseline), %d (hand-written)." % (
           core_own, core_pulled, core_total,
-          "%d to spare" % (budget - core_total) if core_total <= budget else
-          "%d over" % (core_total - budget),
           base_own, base_pulled, base_own + base_pulled, (base_own + base_pulled) / core_total,
           hand_own, hand_pulled, hand_own + hand_pulled,
           nohelp_own + nohelp_pulled,
