@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "unity.h"
@@ -22,6 +23,17 @@ void tearDown(void)
 }
 
 
+/* The text in a heap block of exactly its length, no NUL after it, so a read
+ * one byte past the end is a fault under AddressSanitizer. */
+static char *exact_copy(const char *text)
+{
+    size_t len = strlen(text);
+    char *copy = malloc(len != 0u ? len : 1u);
+    TEST_ASSERT_NOT_NULL(copy);
+    memcpy(copy, text, len);
+    return copy;
+}
+
 /* The EXPECT_* checks are macros so that a failure names the line of the
  * test that made the check; the text under test is the failure message. */
 
@@ -30,7 +42,9 @@ void tearDown(void)
 static void expect_f32_at(UNITY_LINE_TYPE line, const char *text, uint32_t want)
 {
     float f = 12345.0f;
-    daran_result_t rc = daran_parse_f32(text, strlen(text), &f);
+    char *copy = exact_copy(text);
+    daran_result_t rc = daran_parse_f32(copy, strlen(text), &f);
+    free(copy);
     UNITY_TEST_ASSERT_EQUAL_INT(DARAN_OK, rc, line, text);
     UNITY_TEST_ASSERT_EQUAL_HEX32(want, daran_bits_of(f), line, text);
 }
@@ -40,7 +54,9 @@ static void expect_f32_at(UNITY_LINE_TYPE line, const char *text, uint32_t want)
 static void expect_f32_error_at(UNITY_LINE_TYPE line, const char *text, daran_result_t want)
 {
     float f = 12345.0f;
-    daran_result_t rc = daran_parse_f32(text, strlen(text), &f);
+    char *copy = exact_copy(text);
+    daran_result_t rc = daran_parse_f32(copy, strlen(text), &f);
+    free(copy);
     UNITY_TEST_ASSERT_EQUAL_INT(want, rc, line, text);
     UNITY_TEST_ASSERT_EQUAL_HEX32(daran_bits_of(12345.0f), daran_bits_of(f), line, text);
 }
@@ -49,7 +65,9 @@ static void expect_f32_error_at(UNITY_LINE_TYPE line, const char *text, daran_re
 static void expect_u64_at(UNITY_LINE_TYPE line, const char *text, uint64_t want)
 {
     uint64_t v = 777;
-    daran_result_t rc = daran_parse_u64(text, strlen(text), &v);
+    char *copy = exact_copy(text);
+    daran_result_t rc = daran_parse_u64(copy, strlen(text), &v);
+    free(copy);
     UNITY_TEST_ASSERT_EQUAL_INT(DARAN_OK, rc, line, text);
     UNITY_TEST_ASSERT_EQUAL_UINT64(want, v, line, text);
 }
@@ -58,7 +76,9 @@ static void expect_u64_at(UNITY_LINE_TYPE line, const char *text, uint64_t want)
 static void expect_u64_error_at(UNITY_LINE_TYPE line, const char *text, daran_result_t want)
 {
     uint64_t v = 777;
-    daran_result_t rc = daran_parse_u64(text, strlen(text), &v);
+    char *copy = exact_copy(text);
+    daran_result_t rc = daran_parse_u64(copy, strlen(text), &v);
+    free(copy);
     UNITY_TEST_ASSERT_EQUAL_INT(want, rc, line, text);
     UNITY_TEST_ASSERT_EQUAL_UINT64(777, v, line, text);
 }
