@@ -64,6 +64,11 @@
 #define DARAN_ENABLE_MULTI_MOTOR 1
 #endif
 
+/* DARAN_PORT_BARRIER(): not defined here. Only a core built as C99 (no
+ * <stdatomic.h>) by a compiler without the GCC/clang __atomic builtins needs
+ * it: the port's options header defines it as a full memory barrier of its
+ * CPU (with CMSIS, __DMB()), which orders the receive ring's index stores. */
+
 #if DARAN_LINE_MAX < 32 || DARAN_LINE_MAX > 1024
 #error "DARAN_LINE_MAX must be within 32..1024"
 #endif

@@ -44,7 +44,9 @@ static const uint8_t daran_pow10_correction[28] = {
 #define DARAN_POW10_MIN (-64)
 #define DARAN_POW10_STRIDE 14u
 
-/* What the scan found: the digits themselves are read again from the text. */
+/* What the scan found: the significand's first 19 digits gathered, and where
+ * the text's digits are, for the exact comparison and the integer parser that
+ * read them again. */
 typedef struct {
     const char *mant; /* first mantissa character */
     size_t int_len;   /* digits before the point */

@@ -55,8 +55,14 @@ daran_result_t daran_telemetry_tick(daran_drive_t *drive, uint32_t tick, uint32_
 
     static const daran_prop_t head[] = {DARAN_PROP_TELEMETRY_FIELDS, DARAN_PROP_CAN_NODE_ID};
     daran_value_t settings[2];
-    for (unsigned i = 0; i < 2u && result == DARAN_OK; i++) {
+    for (unsigned i = 0; i < 2u; i++) {
         result = daran_get(drive, head[i], &settings[i]);
+        if (result != DARAN_OK) {
+            return result;
+        }
+    }
+    if (!daran_telemetry_fits(settings[0].u32)) {
+        return DARAN_ERR_OUT_OF_RANGE;
     }
     daran_prop_t props[FIELD_COUNT];
     size_t count = 0;
@@ -65,9 +71,6 @@ daran_result_t daran_telemetry_tick(daran_drive_t *drive, uint32_t tick, uint32_
             props[count++] = (daran_prop_t)field_props[bit];
         }
     }
-    if (result == DARAN_OK && !daran_telemetry_fits(settings[0].u32)) {
-        result = DARAN_ERR_OUT_OF_RANGE;
-    }
     uint8_t checksum = drive->reply_checksum;
     drive->reply_checksum = 1; /* reports always carry one */
     daran_reply_begin(drive);
@@ -75,9 +78,7 @@ daran_result_t daran_telemetry_tick(daran_drive_t *drive, uint32_t tick, uint32_
     daran_reply_u64(drive, settings[1].u32);
     daran_reply_space(drive);
     daran_reply_f32(drive, (float)tick / (float)tick_hz);
-    if (result == DARAN_OK) {
-        result = daran_append_properties(drive, props, count);
-    }
+    result = daran_append_properties(drive, props, count);
     if (result == DARAN_OK) {
         daran_reply_end(drive);
     }
