@@ -43,10 +43,13 @@ void daran_fw_default_handler(void)
 
 void daran_fw_reset(void)
 {
+#if defined(__ARM_FP)
     /* Full access to CP10/CP11 before any float instruction: the compiler
-     * may use VFP registers anywhere from here on, memcpy included. */
+     * may use VFP registers anywhere from here on, memcpy included. A CPU
+     * without an FPU (Cortex-M0, M3: soft float) has no CPACR. */
     SCB_CPACR |= (0xFu << 20);
     __asm volatile("dsb\n\tisb" ::: "memory");
+#endif
 
     /* Plain loops, not memcpy/memset: .data and .bss are not ready yet. */
     {
