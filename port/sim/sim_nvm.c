@@ -18,6 +18,9 @@
 #include <math.h>
 #include <string.h>
 
+#include "daran_drive.h"
+#include "daran_port.h"
+
 #define MAGIC 0x4D495344u /* every byte non-zero and not 0xFF */
 #define HEADER_SIZE 16u
 
@@ -148,6 +151,147 @@ static slot_state_t read_slot(const daran_sim_storage_t *st, uint32_t index,
     return SLOT_INTACT;
 }
 
+/* ---- range checks: a stored value must be one `w` would take ----
+ *
+ * A config image with a valid CRC can still hold values no host could have
+ * written (a foreign or older writer, a tampered file): load_inertia -5,
+ * vel_gain -1000, can_node_id 200. Rather than restate the core's ranges
+ * here (the sim may use only its public API, and a copy would drift from
+ * include/daran_properties.h and src/property_table.c), each stored value
+ * is written back through a real `w` line into a scratch protocol instance,
+ * whose HAL only notes what reached set(): the same parser, the same range
+ * rules (-0 counting as 0, the telemetry field set that must fit a report),
+ * in the core as built. What the model refuses on top (a zero gear ratio,
+ * non-finite floats) is daran_sim_model_config_ok(). */
+
+#define PROBE_PATH_MAX 100u
+
+typedef struct probe {
+    daran_prop_t prop;   /* the property the line writes */
+    bool reached_set;    /* the core passed it to the HAL */
+} probe_t;
+
+static const struct {
+    const char *path;
+    bool axis;
+    daran_prop_type_t type;
+} probe_rows[] = {
+#define DARAN_SIM_PROBE_AXIS_AXIS true
+#define DARAN_SIM_PROBE_AXIS_SYSTEM false
+#define DARAN_SIM_PROBE_ROW_(id, path, scope, type, access, range, unit) \
+    {path, DARAN_SIM_PROBE_AXIS_##scope, DARAN_TYPE_##type},
+    DARAN_PROPERTY_LIST(DARAN_SIM_PROBE_ROW_)
+#undef DARAN_SIM_PROBE_ROW_
+};
+
+static daran_result_t probe_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+{
+    (void)ctx;
+    out->u64 = 0u;
+    if (prop == DARAN_PROP_CAN_NODE_ID) {
+        out->u32 = 1u; /* the probe is drive 1: its lines say axis1. or end in 1 */
+    }
+    return DARAN_OK;
+}
+
+static daran_result_t probe_set(void *ctx, daran_prop_t prop, daran_value_t value)
+{
+    probe_t *p = ctx;
+    (void)value;
+    p->reached_set = p->reached_set || prop == p->prop;
+    return DARAN_OK;
+}
+
+static daran_result_t probe_move(void *ctx, const daran_move_t *move)
+{
+    (void)ctx;
+    (void)move;
+    return DARAN_ERR_MOTOR_FAULT;
+}
+
+static daran_result_t probe_action(void *ctx, daran_action_t action)
+{
+    (void)ctx;
+    (void)action;
+    return DARAN_ERR_MOTOR_FAULT;
+}
+
+static void probe_write(void *ctx, const char *line, size_t len)
+{
+    (void)ctx;
+    (void)line;
+    (void)len;
+}
+
+static const daran_hal_t probe_hal = {probe_get, probe_set, probe_move, probe_action};
+
+static size_t put_text(char *out, size_t at, const char *text)
+{
+    size_t n = strlen(text);
+    memcpy(out + at, text, n);
+    return at + n;
+}
+
+/* The value as a host would write it: shortest round-trip float, decimal
+ * integers (a sign for s32). */
+static size_t value_text(daran_prop_type_t type, daran_value_t v, char *out)
+{
+    if (type == DARAN_TYPE_F32) {
+        return daran_format_float(v.f32, out);
+    }
+    if (type == DARAN_TYPE_S32 && v.s32 < 0) {
+        out[0] = '-';
+        return 1u + daran_format_uint((uint64_t)(-(int64_t)v.s32), out + 1);
+    }
+    return daran_format_uint(type == DARAN_TYPE_S32 ? (uint64_t)v.s32 : (uint64_t)v.u32, out);
+}
+
+bool daran_sim_nvm_config_in_range(const daran_value_t cfg[DARAN_PROP_COUNT],
+                                   daran_prop_t *first_bad)
+{
+    daran_drive_t scratch;
+    probe_t probe;
+    int p;
+    probe.prop = DARAN_PROP_COUNT;
+    probe.reached_set = false;
+    if (daran_init(&scratch, &probe_hal, &probe, probe_write, NULL) != DARAN_OK) {
+        return false;
+    }
+    for (p = 0; p < (int)DARAN_PROP_COUNT && p < (int)(sizeof probe_rows / sizeof probe_rows[0]);
+         p++) {
+        /* "w axis1." path ' ' value " 1" (the longest path is 51 bytes) */
+        char line[8u + PROBE_PATH_MAX + 1u + DARAN_FLOAT_TEXT_MAX + DARAN_UINT_TEXT_MAX + 2u];
+        size_t n;
+        daran_result_t r;
+        if (!daran_sim_is_config_prop((daran_prop_t)p) ||
+            strlen(probe_rows[p].path) > PROBE_PATH_MAX) {
+            continue;
+        }
+        n = put_text(line, 0u, probe_rows[p].axis ? "w axis1." : "w ");
+        n = put_text(line, n, probe_rows[p].path);
+        line[n++] = ' ';
+        n += value_text(probe_rows[p].type, cfg[p], line + n);
+        if (!probe_rows[p].axis) {
+            n = put_text(line, n, " 1");
+        }
+        probe.prop = (daran_prop_t)p;
+        probe.reached_set = false;
+        r = daran_process_line(&scratch, line, n);
+        if (r == DARAN_ERR_INVALID_PROPERTY || r == DARAN_ERR_LINE_TOO_LONG) {
+            /* a row the port left out of its build (no host can write it
+             * either), or a path longer than the port's lines: not checked */
+            continue;
+        }
+        if (r != DARAN_OK || !probe.reached_set) {
+            if (first_bad != NULL) {
+                *first_bad = (daran_prop_t)p;
+            }
+            return false;
+        }
+    }
+    return true;
+}
+
 static bool unpack(const uint8_t *payload, daran_sim_model_t *m)
 {
     daran_value_t cfg[DARAN_PROP_COUNT];
@@ -165,7 +309,8 @@ static bool unpack(const uint8_t *payload, daran_sim_model_t *m)
         off += 4u;
     }
     zero = bits_f32(get_u32(payload + off));
-    if (!isfinite(zero) || !daran_sim_model_config_ok(cfg)) {
+    if (!isfinite(zero) || !daran_sim_model_config_ok(cfg) ||
+        !daran_sim_nvm_config_in_range(cfg, NULL)) {
         return false;
     }
     memcpy(m->cfg, cfg, sizeof cfg);

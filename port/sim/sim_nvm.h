@@ -52,8 +52,18 @@ typedef enum daran_sim_nvm_status {
 } daran_sim_nvm_status_t;
 
 /* Boot: load the newest image into m->cfg / m->zero_offset_deg; the
- * defaults when there is none or when a committed image is damaged. */
+ * defaults when there is none or when a committed image is damaged (bad
+ * version, length or CRC, or a value the model or `w` would refuse: see
+ * daran_sim_nvm_config_in_range()). */
 daran_sim_nvm_status_t daran_sim_nvm_load(const daran_sim_storage_t *st, daran_sim_model_t *m);
+
+/* True when every configuration value in @p cfg is one a `w` line would
+ * take: each is written through a real `w` into a scratch protocol
+ * instance (the core's own parser and range rules, as built). Otherwise
+ * false, and *first_bad (if not NULL) names the first property refused.
+ * Boot uses it: a stored image that fails it is damage. */
+bool daran_sim_nvm_config_in_range(const daran_value_t cfg[DARAN_PROP_COUNT],
+                                   daran_prop_t *first_bad);
 
 /* `ss`: write the configuration of @p m into the slot not holding the newest
  * image, committing it with its last byte. False if the storage failed. */
