@@ -17,7 +17,10 @@ extern "C" {
 #endif
 
 #define DARAN_SIM_MAX_DRIVES 16u
-#define DARAN_SIM_OUT_MAX 8192u
+/* Replies a drive holds until they are collected, after each line and each
+ * tick: room for the longest answer to one line (`h ID properties`, every
+ * row of the table: about 8 KB) with margin. More is counted in out_lost. */
+#define DARAN_SIM_OUT_MAX 16384u
 
 typedef struct daran_sim_node {
     daran_sim_drive_t sim;

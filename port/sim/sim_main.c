@@ -17,6 +17,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/time.h>
 #include <termios.h>
 #include <time.h>
 #include <unistd.h>
@@ -26,13 +29,30 @@
 
 #define MAX_ADVANCE_S 86400.0
 #define MAX_TICK_HZ 100000u
+#define DARAN_SIM_STR_(x) #x
+#define DARAN_SIM_STR(x) DARAN_SIM_STR_(x)
+
+/* A protocol line is kept (recorded, sent to the drives) up to one byte past
+ * the drive's line buffer: a longer line is answered `line too long` by the
+ * drives whatever its remaining bytes, so the rest need not be stored. */
+#define PROTOCOL_KEEP ((size_t)DARAN_LINE_MAX + 1u)
+/* Longest directive line (a longer `!#` comment is still just ignored). */
+#define DIRECTIVE_MAX 1024u
+/* Diagnostics on stderr: at most this many a second, the rest counted. */
+#define DIAG_PER_SECOND 20u
+/* --pty output waiting for the client: the pty is not read while this much
+ * is pending; the queue holds that plus the replies of one line on every
+ * drive (DARAN_SIM_OUT_MAX each) and telemetry. */
+#define OUTQ_HIGH (1024u * 1024u)
+#define OUTQ_CAP (OUTQ_HIGH + DARAN_SIM_MAX_DRIVES * DARAN_SIM_OUT_MAX + 256u * 1024u)
 
 static const char usage_text[] =
     "Usage: daran-sim [OPTIONS] < session.txt\n"
     "Simulated Daran servo drives sharing one multi-drop serial line.\n"
     "\n"
     "Protocol lines read on stdin reach every drive; stdout carries exactly the\n"
-    "bytes the drives send back, in id order. Simulated time stands still unless\n"
+    "bytes the drives send back: line by line in the order the requests came,\n"
+    "the answers to one line in id order. Simulated time stands still unless\n"
     "a directive moves it, so every run is reproducible. stdout is flushed after\n"
     "every input line.\n"
     "\n"
@@ -40,7 +60,10 @@ static const char usage_text[] =
     "  --drives N         N drives on the line, ids 1..N (default 1, at most 16)\n"
     "  --nvm DIR          keep each drive's non-volatile memory in DIR/drive-K.nvm\n"
     "                     (K = 1..N), so a saved config survives a restart; the\n"
-    "                     shaft angles are kept in DIR/drive-K.shaft\n"
+    "                     shaft angles are kept in DIR/drive-K.shaft (replaced\n"
+    "                     whole at exit; a failed write is an error, exit 1). A\n"
+    "                     stored config holding a value `w` would refuse boots\n"
+    "                     on defaults with axis0.config_warnings bit 0\n"
     "  --tick-hz HZ       control tick rate, 1..100000 (default 1000)\n"
     "  --trace FILE.csv   write time_s and, per drive K, pos_deg_K, vel_rpm_K,\n"
     "                     torque_nm_K (torque setpoint) and state_K at every tick\n"
@@ -48,18 +71,25 @@ static const char usage_text[] =
     "  --pty              create a pseudo-terminal, print its path as the first\n"
     "                     line of stdout and run in real time: any serial program\n"
     "                     can open that path as the drives' port. stdin still takes\n"
-    "                     directives and protocol lines (replies on stdout); ends\n"
-    "                     on SIGINT or SIGTERM\n"
+    "                     directives and protocol lines (replies on stdout). Replies\n"
+    "                     leave whole lines, in request order; while 1 MiB of them\n"
+    "                     waits for a client that does not read, the port is not\n"
+    "                     read (back-pressure, nothing dropped)\n"
     "  --record FILE      write every protocol line the drives receive (not the\n"
     "                     directives) to FILE as `SECONDS<TAB>line bytes` (the\n"
     "                     bytes before the newline, trailing spaces kept), after\n"
     "                     `#` header lines; SECONDS is the simulated time (moved\n"
     "                     by !advance), with --pty the real time since start.\n"
+    "                     A line longer than the drives' " DARAN_SIM_STR(DARAN_LINE_MAX) " bytes is recorded as\n"
+    "                     its first " DARAN_SIM_STR(DARAN_LINE_MAX) "+1 after a `# overlong line` comment.\n"
     "                     tools/replay plays such a file back\n"
     "  --echo             also print each request as \"> line\", each reply line as\n"
     "                     \"< line\" and each directive (for demos; stdout is then\n"
     "                     no longer the drives' bytes)\n"
-    "  --help             show this text and exit\n"
+    "  --help             show this text and exit\n";
+
+/* (two strings: C99 compilers need take no longer literal than 4095 bytes) */
+static const char usage_more[] =
     "\n"
     "Directives (lines starting with '!', never sent to the drives):\n"
     "  !advance SECONDS   run the control loop for SECONDS (rounded to ticks)\n"
@@ -91,18 +121,24 @@ static const char usage_text[] =
     "  ID is a drive's current can_node_id; 0 means every drive.\n"
     "\n"
     "Messages from directives and bus collisions (two or more drives answering\n"
-    "one line) go to stderr. A bad directive is reported on stderr and skipped;\n"
-    "the run goes on and ends with exit status 1. Bad options: exit status 2.\n";
+    "one line) go to stderr, at most 20 a second (then a count of the ones\n"
+    "suppressed), never waiting for a stderr nobody reads. A bad directive is\n"
+    "reported and skipped; the run goes on and ends with exit status 1. Bad\n"
+    "options: exit status 2.\n"
+    "\n"
+    "SIGINT, SIGTERM and SIGHUP stop every mode within a tick or a line: the\n"
+    "--record and --trace files keep every whole line written so far, the shaft\n"
+    "files are written as at a normal exit (the NVM is written only by `ss`,\n"
+    "never cut by a signal), and daran-sim then dies of the same signal (exit\n"
+    "status 128+N in a shell).\n";
 
 typedef struct sim_app {
     daran_sim_bus_t bus;
     daran_sim_file_storage_t files[DARAN_SIM_MAX_DRIVES];
+    uint32_t lost_reported[DARAN_SIM_MAX_DRIVES]; /* out_lost already told */
     FILE *trace;
     FILE *record;
     double record_start_s;
-    char *record_partial; /* --pty: bytes of a line not yet ended */
-    size_t record_partial_len;
-    size_t record_partial_cap;
     uint32_t trace_every;
     bool echo;
     bool pty;
@@ -112,23 +148,201 @@ typedef struct sim_app {
 } sim_app_t;
 
 static sim_app_t app;
-static volatile sig_atomic_t stop_requested;
+/* The signal that asked us to stop (SIGINT, SIGTERM, SIGHUP), else 0. */
+static volatile sig_atomic_t stop_signal;
 
 static void on_signal(int sig)
 {
-    (void)sig;
-    stop_requested = 1;
+    stop_signal = sig;
+}
+
+static void on_alarm(int sig)
+{
+    (void)sig; /* only to interrupt a blocked write (EINTR) */
+}
+
+/* SIGALRM after @p ms (0: none). */
+static void set_timer_ms(long ms)
+{
+    struct itimerval it;
+    memset(&it, 0, sizeof it);
+    it.it_value.tv_sec = ms / 1000;
+    it.it_value.tv_usec = (ms % 1000) * 1000;
+    (void)setitimer(ITIMER_REAL, &it, NULL);
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/* ---- diagnostics: rate-limited, never blocking ----
+ *
+ * stderr may be a pipe nobody reads: a blocking write there would stop the
+ * drives. Messages go out through a non-blocking description of stderr of
+ * our own (O_NONBLOCK set on fd 2 itself would change it for every process
+ * sharing it), at most DIAG_PER_SECOND a second; the others, and any that
+ * find stderr full, are counted and the count is written when it can be. */
+
+static struct {
+    int fd;                   /* where messages go */
+    bool socket;              /* fd 2 is a socket: send(MSG_DONTWAIT) */
+    bool own;                 /* fd is our own non-blocking description */
+    double window_s;          /* start of the current second */
+    unsigned shown;           /* messages written in it */
+    unsigned long suppressed; /* not written, not yet told */
+} diag = {STDERR_FILENO, false, false, 0.0, 0u, 0ul};
+
+static void diag_init(void)
+{
+    struct stat st;
+    int fd;
+    if (fstat(STDERR_FILENO, &st) != 0 || S_ISREG(st.st_mode) || S_ISBLK(st.st_mode)) {
+        return; /* a file never keeps us waiting */
+    }
+    if (S_ISSOCK(st.st_mode)) {
+        diag.socket = true;
+        return;
+    }
+    fd = open("/proc/self/fd/2", O_WRONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+    if (fd >= 0) {
+        diag.fd = fd;
+        diag.own = true;
+    }
+}
+
+/* One whole message, or nothing (false) when stderr cannot take it now. */
+static bool diag_emit(const char *text, size_t len)
+{
+    ssize_t n;
+    if (diag.socket) {
+        n = send(diag.fd, text, len, MSG_DONTWAIT | MSG_NOSIGNAL);
+    } else if (diag.own || diag.fd != STDERR_FILENO) {
+        n = write(diag.fd, text, len);
+    } else {
+        /* no non-blocking description: write only when stderr says it can
+         * take bytes (a message is shorter than PIPE_BUF) */
+        struct pollfd p = {STDERR_FILENO, POLLOUT, 0};
+        struct stat st;
+        bool file = fstat(STDERR_FILENO, &st) == 0 && (S_ISREG(st.st_mode) || S_ISBLK(st.st_mode));
+        if (!file && (poll(&p, 1, 0) != 1 || (p.revents & POLLOUT) == 0)) {
+            return false;
+        }
+        n = write(STDERR_FILENO, text, len);
+    }
+    return n == (ssize_t)len;
+}
+
+static bool diag_summary(void)
+{
+    char text[160];
+    int n;
+    if (diag.suppressed == 0ul) {
+        return true;
+    }
+    n = snprintf(text, sizeof text,
+                 "daran-sim: %lu messages suppressed (at most %u a second on stderr)\n",
+                 diag.suppressed, DIAG_PER_SECOND);
+    if (n > 0 && diag_emit(text, (size_t)n)) {
+        diag.suppressed = 0ul;
+        return true;
+    }
+    return false;
+}
+
+/* A new second: room for messages again, and the count of the suppressed
+ * ones goes first. */
+static void diag_tick(void)
+{
+    double t = now_s();
+    if (t - diag.window_s >= 1.0) {
+        diag.window_s = t;
+        diag.shown = 0u;
+        if (diag.suppressed > 0ul && diag_summary()) {
+            diag.shown++;
+        }
+    }
+}
+
+/* "daran-sim: " + the message + "\n"; @p urgent ones (a failure at exit)
+ * are not rate-limited, only never blocking. */
+static void diag_v(bool urgent, const char *fmt, va_list ap)
+{
+    char text[512];
+    int n = snprintf(text, sizeof text, "daran-sim: ");
+    int m;
+    diag_tick();
+    if (!urgent && diag.shown >= DIAG_PER_SECOND) {
+        diag.suppressed++;
+        return;
+    }
+    m = vsnprintf(text + n, sizeof text - (size_t)n - 1u, fmt, ap);
+    if (m < 0) {
+        m = 0;
+    }
+    n += m;
+    if ((size_t)n > sizeof text - 2u) {
+        n = (int)sizeof text - 5;
+        memcpy(text + n, "...", 3u);
+        n += 3;
+    }
+    text[n++] = '\n';
+    if (diag_emit(text, (size_t)n)) {
+        diag.shown++;
+    } else {
+        diag.suppressed++;
+    }
+}
+
+static void diag_msg(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    diag_v(false, fmt, ap);
+    va_end(ap);
+}
+
+static void diag_urgent(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    diag_v(true, fmt, ap);
+    va_end(ap);
 }
 
 static void complain(const char *fmt, ...)
 {
+    char text[400];
     va_list ap;
-    fprintf(stderr, "daran-sim: line %lu: ", app.line_no);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
+    diag_msg("line %lu: %s", app.line_no, text);
     app.status = 1;
+}
+
+/* A line's bytes for a message: printable ASCII as is, others as \xNN, at
+ * most about 80 characters. */
+static void quote_line(char *out, size_t size, const char *bytes, size_t len)
+{
+    size_t o = 0u;
+    size_t i;
+    for (i = 0; i < len && o + 8u < size; i++) {
+        unsigned char c = (unsigned char)bytes[i];
+        if (o >= 80u) {
+            memcpy(out + o, "...", 3u);
+            o += 3u;
+            break;
+        }
+        if (c >= 0x20u && c < 0x7Fu && c != '\\') {
+            out[o++] = (char)c;
+        } else {
+            o += (size_t)snprintf(out + o, size - o, "\\x%02X", c);
+        }
+    }
+    out[o] = '\0';
 }
 
 static bool parse_uint(const char *text, unsigned long max, unsigned long *out)
@@ -174,30 +388,176 @@ static void trace_row(void)
     fputc('\n', app.trace);
 }
 
-static void sink_stdout(void *ctx, uint32_t id, const char *bytes, size_t len);
-static void sink_pty(void *ctx, uint32_t id, const char *bytes, size_t len);
+/* ---- replies ---- */
+
+/* Reply bytes a drive could not hold (its output buffer full): never
+ * silent. */
+static void report_lost(void)
+{
+    uint32_t i;
+    for (i = 0; i < app.bus.count; i++) {
+        uint32_t lost = app.bus.node[i].out_lost;
+        if (lost != app.lost_reported[i]) {
+            diag_msg("drive %u: %u reply bytes lost (its output buffer of %u bytes was full)",
+                     daran_sim_drive_id(&app.bus.node[i].sim), lost - app.lost_reported[i],
+                     DARAN_SIM_OUT_MAX);
+            app.lost_reported[i] = lost;
+        }
+    }
+}
+
+static void sink_stdout(void *ctx, uint32_t id, const char *bytes, size_t len)
+{
+    (void)ctx;
+    (void)id;
+    if (!app.echo) {
+        fwrite(bytes, 1, len, stdout);
+        return;
+    }
+    while (len > 0u) {
+        const char *nl = memchr(bytes, '\n', len);
+        size_t n = nl != NULL ? (size_t)(nl - bytes) + 1u : len;
+        fputs("< ", stdout);
+        fwrite(bytes, 1, n, stdout);
+        bytes += n;
+        len -= n;
+    }
+}
+
+/* --pty output: a bounded queue, written without blocking when the pty can
+ * take bytes (POLLOUT). While OUTQ_HIGH bytes wait, the pty is not read, so
+ * a client that does not read is slowed down instead of losing replies. */
+static struct {
+    char buf[OUTQ_CAP];
+    size_t start;
+    size_t len;
+    unsigned long dropped_lines; /* whole lines that found the queue full, not yet told */
+} outq;
+
+static bool outq_put(const char *bytes, size_t len)
+{
+    if (len > OUTQ_CAP - outq.len) {
+        return false;
+    }
+    if (outq.start + outq.len + len > OUTQ_CAP) {
+        memmove(outq.buf, outq.buf + outq.start, outq.len);
+        outq.start = 0u;
+    }
+    memcpy(outq.buf + outq.start + outq.len, bytes, len);
+    outq.len += len;
+    return true;
+}
+
+static void sink_pty(void *ctx, uint32_t id, const char *bytes, size_t len)
+{
+    (void)ctx;
+    (void)id;
+    if (outq_put(bytes, len)) {
+        return;
+    }
+    /* Only telemetry can find the queue full (replies are made only below
+     * OUTQ_HIGH): keep the whole lines that fit, count the others. */
+    while (len > 0u) {
+        const char *nl = memchr(bytes, '\n', len);
+        size_t n = nl != NULL ? (size_t)(nl - bytes) + 1u : len;
+        if (!outq_put(bytes, n)) {
+            outq.dropped_lines++;
+        }
+        bytes += n;
+        len -= n;
+    }
+}
+
+static void outq_flush(void)
+{
+    while (outq.len > 0u) {
+        ssize_t n = write(app.pty_fd, outq.buf + outq.start, outq.len);
+        if (n > 0) {
+            outq.start += (size_t)n;
+            outq.len -= (size_t)n;
+        } else if (n < 0 && errno == EINTR) {
+            continue;
+        } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            break; /* the client is not reading: wait for POLLOUT */
+        } else {
+            diag_msg("--pty: write failed (%s): %zu bytes of replies dropped",
+                     n < 0 ? strerror(errno) : "nothing written", outq.len);
+            outq.len = 0u;
+        }
+    }
+    if (outq.len == 0u) {
+        outq.start = 0u;
+    }
+}
+
+/* Lines dropped are told at most once a second (and at the end), with
+ * their count. */
+static void outq_report(bool final)
+{
+    static double last_s = -1.0;
+    double t = now_s();
+    if (outq.dropped_lines > 0ul && (final || last_s < 0.0 || t - last_s >= 1.0)) {
+        diag_urgent("--pty: %lu telemetry lines dropped: the client has not read the last "
+                    "%u KiB of output",
+                    outq.dropped_lines, (unsigned)(outq.len / 1024u));
+        outq.dropped_lines = 0ul;
+        last_s = t;
+    }
+}
+
+typedef struct collect_ctx {
+    daran_sim_sink_fn sink;
+    uint32_t ids[DARAN_SIM_MAX_DRIVES];
+    uint32_t n;
+} collect_ctx_t;
+
+static void sink_recording(void *ctx, uint32_t id, const char *bytes, size_t len)
+{
+    collect_ctx_t *c = ctx;
+    if (c->n < DARAN_SIM_MAX_DRIVES) {
+        c->ids[c->n++] = id;
+    }
+    c->sink(NULL, id, bytes, len);
+}
+
+/* After one line: hand its replies out (drives in id order); report a
+ * collision on stderr when two or more drives answered that line. */
+static void collect(daran_sim_sink_fn sink, const char *what, size_t what_len)
+{
+    collect_ctx_t c;
+    char ids[DARAN_SIM_MAX_DRIVES * 4u + 1u];
+    char quoted[100];
+    size_t o = 0u;
+    uint32_t i;
+    c.sink = sink;
+    c.n = 0u;
+    if (daran_sim_bus_collect(&app.bus, sink_recording, &c) >= 2u) {
+        for (i = 0; i < c.n; i++) {
+            o += (size_t)snprintf(ids + o, sizeof ids - o, " %u", c.ids[i]);
+        }
+        quote_line(quoted, sizeof quoted, what, what_len);
+        diag_msg("collision: %u drives answered `%s` (ids%s)", c.n, quoted, ids);
+    }
+    report_lost();
+}
 
 /* Telemetry reports leave after the tick that made them, so they interleave
  * with replies in time order; they are no collision (protocol.md 11.2:
- * streaming is for point-to-point links). */
+ * streaming is for point-to-point links). A signal stops the run between
+ * two ticks. */
 static void run_ticks(uint64_t n)
 {
     uint64_t k;
-    for (k = 0; k < n; k++) {
+    for (k = 0; k < n && stop_signal == 0; k++) {
         daran_sim_bus_tick(&app.bus);
         trace_row();
-        (void)daran_sim_bus_collect(&app.bus, app.pty ? sink_pty : sink_stdout, NULL);
+        if (daran_sim_bus_collect(&app.bus, app.pty ? sink_pty : sink_stdout, NULL) > 0u) {
+            report_lost();
+        }
     }
 }
 
 /* ---- --record ---- */
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
 
 /* The header says how the session ran, so tools/replay can run it the same
  * way without being told. */
@@ -233,11 +593,19 @@ static void record_sim_time(void)
     fprintf(app.record, "%" PRIu64 ".%0*" PRIu64, whole, digits, frac);
 }
 
-/* One received line, without its '\n'. */
-static void record_line(const char *bytes, size_t len)
+/* One received line, without its '\n': @p kept of its @p total bytes (a
+ * line longer than PROTOCOL_KEEP keeps only those, which the drives answer
+ * as they would the whole line: `line too long`). */
+static void record_line(const char *bytes, size_t kept, uint64_t total)
 {
     if (app.record == NULL) {
         return;
+    }
+    if (total > kept) {
+        fprintf(app.record,
+                "# overlong line: %" PRIu64 " bytes before its \\n, the first %zu recorded "
+                "(more than DARAN_LINE_MAX %u: the drives answer both `line too long`)\n",
+                total, kept, (unsigned)DARAN_LINE_MAX);
     }
     if (app.pty) {
         fprintf(app.record, "%.6f", now_s() - app.record_start_s);
@@ -245,116 +613,9 @@ static void record_line(const char *bytes, size_t len)
         record_sim_time();
     }
     fputc('\t', app.record);
-    fwrite(bytes, 1, len, app.record);
+    fwrite(bytes, 1, kept, app.record);
     fputc('\n', app.record);
     fflush(app.record); /* a killed session keeps what it received */
-}
-
-/* Bytes from the pty arrive in any chunks: a line is recorded when its '\n'
- * arrives (a line never ended by the end of the run is not recorded). */
-static void record_bytes(const char *bytes, size_t len)
-{
-    while (app.record != NULL && len > 0u) {
-        const char *nl = memchr(bytes, '\n', len);
-        size_t n = nl != NULL ? (size_t)(nl - bytes) : len;
-        /* >=: the buffer exists even for an empty line (no NULL to memcpy) */
-        if (app.record_partial_len + n >= app.record_partial_cap) {
-            size_t cap = app.record_partial_len + n + 256u;
-            char *grown = realloc(app.record_partial, cap);
-            if (grown == NULL) {
-                return;
-            }
-            app.record_partial = grown;
-            app.record_partial_cap = cap;
-        }
-        memcpy(app.record_partial + app.record_partial_len, bytes, n);
-        app.record_partial_len += n;
-        if (nl == NULL) {
-            return;
-        }
-        record_line(app.record_partial, app.record_partial_len);
-        app.record_partial_len = 0u;
-        bytes += n + 1u;
-        len -= n + 1u;
-    }
-}
-
-/* ---- replies ---- */
-
-static void write_all(int fd, const char *bytes, size_t len)
-{
-    while (len > 0u) {
-        ssize_t n = write(fd, bytes, len);
-        if (n < 0 && errno == EINTR) {
-            continue;
-        }
-        if (n <= 0) {
-            return; /* nobody reading (pty full or closed): the bytes are lost */
-        }
-        bytes += n;
-        len -= (size_t)n;
-    }
-}
-
-static void sink_stdout(void *ctx, uint32_t id, const char *bytes, size_t len)
-{
-    (void)ctx;
-    (void)id;
-    if (!app.echo) {
-        fwrite(bytes, 1, len, stdout);
-        return;
-    }
-    while (len > 0u) {
-        const char *nl = memchr(bytes, '\n', len);
-        size_t n = nl != NULL ? (size_t)(nl - bytes) + 1u : len;
-        fputs("< ", stdout);
-        fwrite(bytes, 1, n, stdout);
-        bytes += n;
-        len -= n;
-    }
-}
-
-static void sink_pty(void *ctx, uint32_t id, const char *bytes, size_t len)
-{
-    (void)ctx;
-    (void)id;
-    write_all(app.pty_fd, bytes, len);
-}
-
-typedef struct collect_ctx {
-    daran_sim_sink_fn sink;
-    uint32_t ids[DARAN_SIM_MAX_DRIVES];
-    uint32_t n;
-} collect_ctx_t;
-
-static void sink_recording(void *ctx, uint32_t id, const char *bytes, size_t len)
-{
-    collect_ctx_t *c = ctx;
-    if (c->n < DARAN_SIM_MAX_DRIVES) {
-        c->ids[c->n++] = id;
-    }
-    c->sink(NULL, id, bytes, len);
-}
-
-/* Hand the replies out in id order; report a collision on stderr. */
-static void collect(daran_sim_sink_fn sink, const char *what, size_t what_len)
-{
-    collect_ctx_t c;
-    uint32_t i;
-    c.sink = sink;
-    c.n = 0u;
-    if (daran_sim_bus_collect(&app.bus, sink_recording, &c) < 2u) {
-        return;
-    }
-    fprintf(stderr, "daran-sim: collision: %u drives answered", c.n);
-    if (what != NULL) {
-        fprintf(stderr, " `%.*s`", (int)what_len, what);
-    }
-    fputs(" (ids", stderr);
-    for (i = 0; i < c.n; i++) {
-        fprintf(stderr, " %u", c.ids[i]);
-    }
-    fputs(")\n", stderr);
 }
 
 /* ---- directives ---- */
@@ -488,50 +749,162 @@ static void directive(char *line)
     }
 }
 
-/* One line from stdin: a directive, or bytes for the drives (with its '\n'). */
-static void handle_input_line(char *line, size_t len)
+/* ---- input: whole lines, one at a time ----
+ *
+ * Each input (stdin, the pty) assembles its lines in a bounded buffer and
+ * hands each to the drives whole, when its '\n' arrives, then collects the
+ * replies of that line alone: replies leave in the order the requests came,
+ * as on a real multi-drop line, a collision is a property of one line, and
+ * lines from stdin and the pty never interleave inside the drives. A
+ * protocol line keeps PROTOCOL_KEEP bytes (the drives answer a longer one
+ * `line too long` whatever follows), a directive DIRECTIVE_MAX: memory does
+ * not grow with a line that never ends. */
+
+typedef struct line_source {
+    bool directives;        /* lines starting with '!' are directives (stdin) */
+    daran_sim_sink_fn sink; /* where the replies to its lines go */
+    bool directive;         /* the current line is one */
+    size_t kept;            /* bytes of the current line in line[] */
+    uint64_t total;         /* bytes of the current line so far, before its '\n' */
+    char line[DIRECTIVE_MAX + 2u];
+} line_source_t;
+
+static void source_init(line_source_t *s, bool directives, daran_sim_sink_fn sink)
 {
-    app.line_no++;
-    if (len > 0u && line[0] == '!') {
-        if (app.echo) {
-            fwrite(line, 1, len, stdout);
-        }
-        line[len - (line[len - 1u] == '\n' ? 1u : 0u)] = '\0';
-        directive(line);
-    } else {
-        if (app.echo) {
-            fputs("> ", stdout);
-            fwrite(line, 1, len, stdout);
-        }
-        record_line(line, len > 0u && line[len - 1u] == '\n' ? len - 1u : len);
-        daran_sim_bus_send(&app.bus, line, len);
-        collect(sink_stdout, line, len > 0u && line[len - 1u] == '\n' ? len - 1u : len);
+    memset(s, 0, sizeof *s);
+    s->directives = directives;
+    s->sink = sink;
+}
+
+/* Bytes up to the end of the current line (its '\n' included, *ended set)
+ * or all of them; returns how many were taken. */
+static size_t source_take(line_source_t *s, const char *bytes, size_t len, bool *ended)
+{
+    const char *nl = memchr(bytes, '\n', len);
+    size_t n = nl != NULL ? (size_t)(nl - bytes) : len;
+    size_t room;
+    if (s->total == 0u && n > 0u) {
+        s->directive = s->directives && bytes[0] == '!';
     }
-    fflush(stdout);
+    room = (s->directive ? DIRECTIVE_MAX : PROTOCOL_KEEP) - s->kept;
+    if (room > n) {
+        room = n;
+    }
+    memcpy(s->line + s->kept, bytes, room);
+    s->kept += room;
+    s->total += n;
+    *ended = nl != NULL;
+    return nl != NULL ? n + 1u : n;
+}
+
+static void protocol_line(line_source_t *s)
+{
+    if (app.echo) {
+        fputs("> ", stdout);
+        fwrite(s->line, 1, s->kept, stdout);
+        fputc('\n', stdout);
+    }
+    record_line(s->line, s->kept, s->total);
+    s->line[s->kept] = '\n';
+    daran_sim_bus_send(&app.bus, s->line, s->kept + 1u);
+    collect(s->sink, s->line, s->kept);
+}
+
+static void directive_line(line_source_t *s)
+{
+    if (app.echo) {
+        fwrite(s->line, 1, s->kept, stdout);
+        fputc('\n', stdout);
+    }
+    if (s->total > s->kept) {
+        if (s->line[1] != '#') {
+            complain("directive longer than %u bytes: skipped", DIRECTIVE_MAX);
+        }
+        return;
+    }
+    s->line[s->kept] = '\0';
+    directive(s->line);
+}
+
+/* The current line has ended (its '\n' arrived, or the input did). */
+static void source_end_line(line_source_t *s)
+{
+    if (s->directives) {
+        app.line_no++;
+    }
+    if (s->directive) {
+        directive_line(s);
+    } else {
+        protocol_line(s);
+    }
+    if (s->sink == sink_stdout) {
+        fflush(stdout);
+    }
+    s->kept = 0u;
+    s->total = 0u;
+    s->directive = false;
+}
+
+/* Every line of @p bytes, until a signal asks to stop. */
+static void source_feed(line_source_t *s, const char *bytes, size_t len)
+{
+    while (len > 0u && stop_signal == 0) {
+        bool ended;
+        size_t n = source_take(s, bytes, len, &ended);
+        if (ended) {
+            source_end_line(s);
+        }
+        bytes += n;
+        len -= n;
+    }
+}
+
+/* A last line without its '\n' is taken as if it had one. */
+static void source_eof(line_source_t *s)
+{
+    if (s->total > 0u && stop_signal == 0) {
+        source_end_line(s);
+    }
 }
 
 /* ---- lock-step mode ---- */
 
+static line_source_t stdin_source;
+
+/* stdin is polled (a signal's EINTR, or at worst the 250 ms timeout, ends
+ * the wait) and read in chunks; lines are taken one at a time. */
 static void run_lockstep(void)
 {
-    char *line = NULL;
-    size_t cap = 0u;
-    ssize_t got;
-    while ((got = getline(&line, &cap, stdin)) >= 0) {
-        size_t len = (size_t)got;
-        if (len == 0u || line[len - 1u] != '\n') {
-            /* a last line without its '\n' is taken as if it had one */
-            char *grown = realloc(line, len + 2u);
-            if (grown == NULL) {
-                break;
-            }
-            line = grown;
-            line[len++] = '\n';
-            line[len] = '\0';
+    char buf[4096];
+    source_init(&stdin_source, true, sink_stdout);
+    while (stop_signal == 0) {
+        struct pollfd p = {STDIN_FILENO, POLLIN, 0};
+        ssize_t n;
+        int r = poll(&p, 1, 250);
+        if (r < 0 && errno != EINTR) {
+            diag_urgent("stdin: %s", strerror(errno));
+            app.status = 1;
+            break;
         }
-        handle_input_line(line, len);
+        if (r <= 0) {
+            continue;
+        }
+        n = read(STDIN_FILENO, buf, sizeof buf);
+        if (n < 0 && (errno == EINTR || errno == EAGAIN)) {
+            continue;
+        }
+        if (n < 0) {
+            diag_urgent("stdin: %s", strerror(errno));
+            app.status = 1;
+            break;
+        }
+        if (n == 0) {
+            break;
+        }
+        source_feed(&stdin_source, buf, (size_t)n);
+        diag_tick();
     }
-    free(line);
+    source_eof(&stdin_source);
 }
 
 /* ---- real-time pty mode ---- */
@@ -556,15 +929,17 @@ static int open_pty(char *path, size_t path_size, int *slave_keep)
     return fd;
 }
 
+static line_source_t pty_source;
+
 static int run_pty(void)
 {
     char path[256];
     int slave_keep = -1;
     double period = 1.0 / (double)app.bus.tick_hz;
     double next;
-    char *stdin_buf = NULL;
-    size_t stdin_len = 0u;
-    size_t stdin_cap = 0u;
+    char pty_buf[4096];
+    size_t pty_pos = 0u;
+    size_t pty_len = 0u;
     bool stdin_open = true;
 
     app.pty_fd = open_pty(path, sizeof path, &slave_keep);
@@ -572,59 +947,66 @@ static int run_pty(void)
         fprintf(stderr, "daran-sim: cannot create a pseudo-terminal: %s\n", strerror(errno));
         return 1;
     }
+    source_init(&pty_source, false, sink_pty);
+    source_init(&stdin_source, true, sink_stdout);
     printf("%s\n", path);
     fflush(stdout);
     next = now_s() + period;
-    while (!stop_requested) {
+    while (stop_signal == 0) {
         struct pollfd pfd[2];
         double wait = next - now_s();
         int timeout = wait <= 0.0 ? 0 : (int)ceil(wait * 1000.0);
         nfds_t nfds = 1;
+        /* read the pty only when its last chunk is done and the replies
+         * are not piling up (back-pressure) */
+        bool want_pty = pty_pos == pty_len && outq.len < OUTQ_HIGH;
         pfd[0].fd = app.pty_fd;
-        pfd[0].events = POLLIN;
+        pfd[0].events = (short)((want_pty ? POLLIN : 0) | (outq.len > 0u ? POLLOUT : 0));
+        pfd[0].revents = 0;
         pfd[1].fd = STDIN_FILENO;
         pfd[1].events = POLLIN;
+        pfd[1].revents = 0;
         if (stdin_open) {
             nfds = 2;
         }
         if (poll(pfd, nfds, timeout) < 0 && errno != EINTR) {
+            diag_urgent("poll: %s", strerror(errno));
+            app.status = 1;
             break;
         }
-        if ((pfd[0].revents & POLLIN) != 0) {
-            char buf[512];
-            ssize_t n = read(app.pty_fd, buf, sizeof buf);
+        if (stop_signal != 0) {
+            break;
+        }
+        if (outq.len > 0u) {
+            outq_flush();
+        }
+        if (want_pty && (pfd[0].revents & POLLIN) != 0) {
+            ssize_t n = read(app.pty_fd, pty_buf, sizeof pty_buf);
             if (n > 0) {
-                record_bytes(buf, (size_t)n);
-                daran_sim_bus_send(&app.bus, buf, (size_t)n);
-                collect(sink_pty, NULL, 0u);
+                pty_pos = 0u;
+                pty_len = (size_t)n;
             }
         }
-        if (stdin_open && (pfd[1].revents & (POLLIN | POLLHUP)) != 0) {
-            char buf[512];
+        /* one line at a time, its replies queued behind the earlier ones;
+         * no further line while the queue is at its high-water mark */
+        while (pty_pos < pty_len && outq.len < OUTQ_HIGH && stop_signal == 0) {
+            bool ended;
+            pty_pos += source_take(&pty_source, pty_buf + pty_pos, pty_len - pty_pos, &ended);
+            if (ended) {
+                source_end_line(&pty_source);
+            }
+        }
+        if (outq.len > 0u) {
+            outq_flush();
+        }
+        if (stdin_open && (pfd[1].revents & (POLLIN | POLLHUP | POLLERR)) != 0) {
+            char buf[4096];
             ssize_t n = read(STDIN_FILENO, buf, sizeof buf);
-            if (n <= 0) {
+            if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) {
+                source_eof(&stdin_source);
                 stdin_open = false; /* keep serving the pty */
-            } else {
-                char *nl;
-                if (stdin_len + (size_t)n + 1u > stdin_cap) {
-                    char *grown = realloc(stdin_buf, stdin_len + (size_t)n + 1u);
-                    if (grown == NULL) {
-                        break;
-                    }
-                    stdin_buf = grown;
-                    stdin_cap = stdin_len + (size_t)n + 1u;
-                }
-                memcpy(stdin_buf + stdin_len, buf, (size_t)n);
-                stdin_len += (size_t)n;
-                while ((nl = memchr(stdin_buf, '\n', stdin_len)) != NULL) {
-                    size_t len = (size_t)(nl - stdin_buf) + 1u;
-                    char saved = stdin_buf[len];
-                    stdin_buf[len] = '\0';
-                    handle_input_line(stdin_buf, len);
-                    stdin_buf[len] = saved;
-                    memmove(stdin_buf, stdin_buf + len, stdin_len - len);
-                    stdin_len -= len;
-                }
+            } else if (n > 0) {
+                source_feed(&stdin_source, buf, (size_t)n);
             }
         }
         {
@@ -632,13 +1014,18 @@ static int run_pty(void)
             if (t - next > 1.0) {
                 next = t; /* fell far behind (suspended): do not race to catch up */
             }
-            while (next <= t) {
+            while (next <= t && stop_signal == 0) {
                 run_ticks(1u);
                 next += period;
             }
         }
+        if (outq.len > 0u) {
+            outq_flush();
+        }
+        outq_report(false);
+        diag_tick();
     }
-    free(stdin_buf);
+    outq_report(true);
     if (slave_keep >= 0) {
         close(slave_keep);
     }
@@ -666,29 +1053,61 @@ static void load_shafts(const char *dir)
         shaft_file(path, sizeof path, dir, i);
         f = fopen(path, "r");
         if (f == NULL) {
+            if (errno != ENOENT) {
+                diag_msg("--nvm: cannot read %s (%s): the shaft starts at 0 deg", path,
+                         strerror(errno));
+            }
             continue;
         }
         if (fscanf(f, "%f", &angle) == 1 && isfinite(angle)) {
             app.bus.node[i].sim.model.raw_pos_deg = angle;
             daran_sim_bus_power_cycle(&app.bus, i);
+        } else {
+            diag_msg("--nvm: %s holds no shaft angle: the shaft starts at 0 deg", path);
         }
         fclose(f);
     }
 }
 
-static void save_shafts(const char *dir)
+/* Each file is replaced whole: written beside it, then renamed over it, so
+ * whenever the program stops (a signal, a kill) a shaft file holds the old
+ * angle or the new one, never a part. False (and said on stderr) when one
+ * could not be written. */
+static bool save_shafts(const char *dir)
 {
+    bool ok = true;
     uint32_t i;
     for (i = 0; i < app.bus.count; i++) {
         char path[4096];
+        char tmp[4200];
         FILE *f;
+        int err = 0;
         shaft_file(path, sizeof path, dir, i);
-        f = fopen(path, "w");
-        if (f != NULL) {
-            fprintf(f, "%.9g\n", (double)app.bus.node[i].sim.model.raw_pos_deg);
-            fclose(f);
+        snprintf(tmp, sizeof tmp, "%s.tmp", path);
+        f = fopen(tmp, "w");
+        if (f == NULL) {
+            err = errno;
+        } else {
+            if (fprintf(f, "%.9g\n", (double)app.bus.node[i].sim.model.raw_pos_deg) < 0 ||
+                fflush(f) != 0) {
+                err = errno != 0 ? errno : EIO;
+            }
+            if (fclose(f) != 0 && err == 0) {
+                err = errno;
+            }
+            if (err == 0 && rename(tmp, path) != 0) {
+                err = errno;
+            }
+            if (err != 0) {
+                (void)unlink(tmp);
+            }
+        }
+        if (err != 0) {
+            diag_urgent("--nvm: cannot write %s: %s", path, strerror(err));
+            ok = false;
         }
     }
+    return ok;
 }
 
 static int open_nvm(const char *dir)
@@ -707,8 +1126,29 @@ static int open_nvm(const char *dir)
             return 2;
         }
         daran_sim_bus_set_storage(&app.bus, i, &st);
+        if (app.bus.node[i].sim.nvm_status == DARAN_SIM_NVM_DAMAGED) {
+            diag_msg("--nvm: %s is damaged or holds a value out of range: drive %u boots on "
+                     "defaults (axis0.config_warnings bit 0)",
+                     path, i + 1u);
+        }
     }
     return 0;
+}
+
+/* A closed stdin, stdout or stderr becomes /dev/null, so that no file this
+ * program opens (an NVM file) takes its number and receives messages. */
+static void keep_std_fds(void)
+{
+    int fd;
+    for (fd = 0; fd <= 2; fd++) {
+        if (fcntl(fd, F_GETFD) < 0 && errno == EBADF) {
+            int null = open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY);
+            if (null >= 0 && null != fd) {
+                (void)dup2(null, fd);
+                (void)close(null);
+            }
+        }
+    }
 }
 
 static int bad_option(const char *fmt, const char *arg)
@@ -717,6 +1157,20 @@ static int bad_option(const char *fmt, const char *arg)
     fprintf(stderr, fmt, arg);
     fputs("\nTry 'daran-sim --help'.\n", stderr);
     return 2;
+}
+
+static void on_signals(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    struct sigaction sa;
+    size_t k;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0; /* no SA_RESTART: a blocked read or write returns EINTR */
+    for (k = 0; k < sizeof sigs / sizeof sigs[0]; k++) {
+        (void)sigaction(sigs[k], &sa, NULL);
+    }
 }
 
 int main(int argc, char **argv)
@@ -743,6 +1197,10 @@ int main(int argc, char **argv)
     int rc;
     uint32_t i;
 
+    /* a closed stdout or pty is an error return, not a death (--help | grep -q
+     * included) */
+    signal(SIGPIPE, SIG_IGN);
+    keep_std_fds();
     opterr = 0;
     while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         switch (c) {
@@ -778,6 +1236,7 @@ int main(int argc, char **argv)
             break;
         case 'h':
             fputs(usage_text, stdout);
+            fputs(usage_more, stdout);
             return 0;
         default:
             if (optopt != 0) {
@@ -795,9 +1254,8 @@ int main(int argc, char **argv)
         return bad_option("unexpected argument '%s'", argv[optind]);
     }
 
-    signal(SIGPIPE, SIG_IGN);
-    signal(SIGINT, on_signal);
-    signal(SIGTERM, on_signal);
+    on_signals();
+    diag_init();
 
     if (daran_sim_bus_init(&app.bus, (uint32_t)drives, (uint32_t)tick_hz) != DARAN_OK) {
         return bad_option("cannot set up %s drives", "the");
@@ -842,23 +1300,44 @@ int main(int argc, char **argv)
         run_lockstep();
     }
 
+    /* The same ending for a signal as for the end of input: the files are
+     * closed whole, the shaft angles written. After a signal, a stdout
+     * nobody reads may hold the last replies back for at most 0.25 s. */
+    if (stop_signal != 0) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_alarm;
+        sigemptyset(&sa.sa_mask);
+        (void)sigaction(SIGALRM, &sa, NULL);
+        set_timer_ms(250);
+    }
+    (void)fflush(stdout);
+    set_timer_ms(0);
     if (app.trace != NULL && fclose(app.trace) != 0) {
-        fprintf(stderr, "daran-sim: --trace: write failed\n");
+        diag_urgent("--trace: write failed");
         app.status = 1;
     }
     if (app.record != NULL) {
         bool failed = ferror(app.record) != 0;
         if (fclose(app.record) != 0 || failed) {
-            fprintf(stderr, "daran-sim: --record: write failed\n");
+            diag_urgent("--record: write failed");
             app.status = 1;
         }
     }
-    free(app.record_partial);
-    if (nvm_dir != NULL) {
-        save_shafts(nvm_dir);
+    if (nvm_dir != NULL && !save_shafts(nvm_dir)) {
+        app.status = 1;
     }
     for (i = 0; i < DARAN_SIM_MAX_DRIVES; i++) {
         daran_sim_file_storage_close(&app.files[i]);
+    }
+    (void)diag_summary();
+    if (stop_signal != 0) {
+        /* die of the signal, as a program that did not catch it would: the
+         * shell sees 128 + N, a parent WIFSIGNALED */
+        int sig = (int)stop_signal;
+        signal(sig, SIG_DFL);
+        raise(sig);
+        return 128 + sig;
     }
     return app.status;
 }

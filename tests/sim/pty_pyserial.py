@@ -103,7 +103,7 @@ def main():
             sim.wait()
     for failure in failures:
         print("FAIL:", failure)
-    if sim.returncode != 0:
+    if sim.returncode not in (-15, 143):  # killed by SIGTERM, as a signal ends it
         print("FAIL: daran-sim exit status %d after SIGTERM" % sim.returncode)
         return 1
     print("pyserial on --pty: %s" % ("all checks passed" if not failures else "failed"))

@@ -89,7 +89,7 @@ def main():
 
     for failure in failures:
         print("FAIL:", failure)
-    if sim.returncode != 0:
+    if sim.returncode not in (-15, 143):  # killed by SIGTERM, as a signal ends it
         print("FAIL: daran-sim exit status %d after SIGTERM" % sim.returncode)
         return 1
     print("plot_telemetry on --pty: %s" % ("all checks passed" if not failures else "failed"))

@@ -124,7 +124,8 @@ if [ -e /dev/ptmx ]; then
         fail "--pty: no pseudo-terminal path on the first line of stdout"
     fi
     kill -TERM "$sim_pid"
-    wait "$sim_pid" || fail "--pty run exit status"
+    wait "$sim_pid"
+    [ $? -eq 143 ] || fail "--pty run exit status (want 143: ended by SIGTERM)"
     sim_pid=
     exec {keep}>&-
     grep -q '^# daran-sim --drives 1 --tick-hz 1000 --pty' "$tmp/pty.txt" || fail "--pty: header"
