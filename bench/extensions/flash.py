@@ -115,7 +115,7 @@ def main():
     print()
     symbols = {c: member_symbols(out, c, "property_table") for c, _ in CONFIGS}
     names = sorted(set().union(*[s.keys() for s in symbols.values()]),
-                   key=lambda s: -symbols["none"].get(s, 0))
+                   key=lambda s: (-symbols["none"].get(s, 0), s))
     print("| symbol | none | brake | rows only | omissions only |")
     print("|---|---:|---:|---:|---:|")
     for name in names:
