@@ -11,7 +11,8 @@
 # (ext_main.c with the example's `sb` table); both then run under QEMU
 # mps2-an386 with tools/qemu-insn-count/measure_insns.py, and report.py puts
 # the counts side by side. Needs arm-none-eabi-gcc, cmake, ninja,
-# qemu-system-arm (mps2-an386), a host cc for the plugin, python3. About 30 s.
+# qemu-system-arm (mps2-an386), a host cc for the plugin, python3. About 11 s
+# from nothing (the four core configurations), 4 s again.
 set -eu
 cd "$(dirname "$0")/../.."
 out=${1:-build/bench/extensions}
