@@ -799,7 +799,7 @@ static size_t source_take(line_source_t *s, const char *bytes, size_t len, bool 
 
 static void protocol_line(line_source_t *s)
 {
-    if (app.echo) {
+    if (app.echo && s->sink == sink_stdout) { /* a pty client's lines are not echoed */
         fputs("> ", stdout);
         fwrite(s->line, 1, s->kept, stdout);
         fputc('\n', stdout);
