@@ -6,13 +6,14 @@
 #   cortex-m3   QEMU mps2-an385   (no FPU)
 #   cortex-m7   QEMU mps2-an500   (FPv5, double precision)
 #   cortex-m33  QEMU mps2-an505   (FPv5 single precision, Secure state)
-# One `cmake --workflow --preset <cpu>` each (port/boards, docs/targets.md),
+#   big-endian  qemu-ppc          (32-bit PowerPC, glibc; host-style programs)
+# One `cmake --workflow --preset <name>` each (port/boards, docs/targets.md),
 # then one summary line per target. Exits non-zero if any workflow or
 # summary fails. Budget: well under 3 minutes on the 2-core CI machine.
 set -eu
 cd "$(dirname "$0")/../.."
 
-presets=${MORE_TARGETS:-"cortex-m0 cortex-m3 cortex-m7 cortex-m33"}
+presets=${MORE_TARGETS:-"cortex-m0 cortex-m3 cortex-m7 cortex-m33 big-endian"}
 
 missing=""
 command -v arm-none-eabi-gcc >/dev/null 2>&1 || missing="$missing gcc-arm-none-eabi"
@@ -20,6 +21,9 @@ command -v arm-none-eabi-gcc >/dev/null 2>&1 || missing="$missing gcc-arm-none-e
     missing="$missing libnewlib-arm-none-eabi"
 command -v qemu-system-arm >/dev/null 2>&1 || missing="$missing qemu-system-arm"
 command -v cc >/dev/null 2>&1 || missing="$missing gcc" # the counting plugin
+command -v powerpc-linux-gnu-gcc >/dev/null 2>&1 || missing="$missing gcc-powerpc-linux-gnu"
+[ -e /usr/powerpc-linux-gnu/lib/libm.so.6 ] || missing="$missing libc6-dev-powerpc-cross"
+command -v qemu-ppc >/dev/null 2>&1 || missing="$missing qemu-user"
 if [ -n "$missing" ]; then
     echo "32-more-targets: installing$missing"
     apt-get update -qq
