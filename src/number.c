@@ -160,8 +160,11 @@ static int number_scan(const char *t, size_t len, number_scan_t *s)
     int eneg = 0, truncated = 0;
     uint64_t w = 0;
     uint32_t taken = 0;
+    if (len == 0u) {
+        return 0; /* empty (text may then be NULL: no pointer arithmetic on it) */
+    }
     s->negative = 0;
-    if (len && (t[0] == '+' || t[0] == '-')) {
+    if (t[0] == '+' || t[0] == '-') {
         s->negative = t[0] == '-';
         i = 1;
     }
