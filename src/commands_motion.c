@@ -58,7 +58,7 @@ static daran_result_t check_value(uint8_t check, float value)
     case CHECK_MODE_VELOCITY:
     case CHECK_MODE_TORQUE:
         for (uint8_t mode = 1; mode < 8u; mode++) {
-            if (((mode_sets[check] >> mode) & 1u) != 0u && value == (float)mode) {
+            if ((((unsigned)mode_sets[check] >> mode) & 1u) != 0u && value == (float)mode) {
                 return DARAN_OK;
             }
         }

@@ -5,6 +5,7 @@
 #include "number.h"
 
 #include <float.h>
+#include <stdint.h>
 #include <string.h>
 
 /* The fast path needs float operations rounded once, to float (not wider, as
@@ -56,7 +57,7 @@ typedef struct {
     int32_t exp10;    /* explicit exponent, saturated */
     int negative;
     uint64_t w;       /* the first up to 19 digits from index z, as an integer */
-    uint32_t w_len;   /* how many digits w holds */
+    size_t w_len;     /* how many digits w holds */
     int truncated;    /* a non-zero digit follows the 19 in w (then w >= 10^18) */
 } number_scan_t;
 
@@ -73,7 +74,12 @@ static int is_digit(char c)
 static int32_t diff_saturated(size_t a, size_t b)
 {
     size_t d = a >= b ? a - b : b - a;
-    int32_t v = d > (size_t)DARAN_NUM_CAP ? (int32_t)DARAN_NUM_CAP : (int32_t)d;
+#if SIZE_MAX > DARAN_NUM_CAP /* a 16-bit size_t cannot even hold the cap */
+    if (d > (size_t)DARAN_NUM_CAP) {
+        d = (size_t)DARAN_NUM_CAP;
+    }
+#endif
+    int32_t v = (int32_t)d;
     return a >= b ? v : -v;
 }
 
@@ -159,7 +165,7 @@ static int number_scan(const char *t, size_t len, number_scan_t *s)
     int32_t e = 0;
     int eneg = 0, truncated = 0;
     uint64_t w = 0;
-    uint32_t taken = 0;
+    size_t taken = 0;
     if (len == 0u) {
         return 0; /* empty (text may then be NULL: no pointer arithmetic on it) */
     }
