@@ -78,7 +78,7 @@ static daran_result_t parse_value(const daran_field_t *field, uint8_t check, flo
         if (result == DARAN_ERR_INVALID_VALUE) {
             return result;
         }
-        *out = (result == DARAN_OK && mode < 8u) ? (float)mode : -1.0f;
+        *out = (result == DARAN_OK && mode < 8u) ? (float)(uint8_t)mode : -1.0f;
     } else {
         daran_result_t result = daran_parse_f32(field->text, field->len, out);
         if (result != DARAN_OK) {
