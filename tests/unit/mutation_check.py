@@ -35,10 +35,10 @@ OPS = [(r"(?<![<>=!])==(?!=)", "!="), (r"!=", "=="), (r"(?<![<-])<=", "<"),
 
 
 def test_programs(repo):
-    """Every unit program: the areas tests/unit/CMakeLists.txt builds (so a new
-    suite counts at once) and the number module's own unit suites."""
-    text = open(os.path.join(repo, "tests", "unit", "CMakeLists.txt")).read()
-    block = re.search(r"set\(_daran_unit_areas(.*?)\)", text, re.S)
+    """Every unit program: the areas of tests/unit/areas.cmake (so a new suite
+    counts at once) and the number module's own unit suites."""
+    text = open(os.path.join(repo, "tests", "unit", "areas.cmake")).read()
+    block = re.search(r"set\(DARAN_UNIT_AREAS(.*?)\)", text, re.S)
     return (["tests/unit/unit_" + a for a in block.group(1).split()]
             + ["tests/number/number_unit", "tests/number/number_pow10"])
 

@@ -8,9 +8,9 @@
 # default matrix). Exit status: the number of option sets that failed.
 set -u
 src=$(cd "$(dirname "$0")/../.." && pwd)
-# the areas tests/unit/CMakeLists.txt builds, so a new suite joins the matrix
-areas=$(sed -n '/^set(_daran_unit_areas/,/^)/{/^ /p}' "$src/tests/unit/CMakeLists.txt")
-[ -n "$areas" ] || { echo "no unit areas found in tests/unit/CMakeLists.txt"; exit 1; }
+# the areas of tests/unit/areas.cmake, so a new suite joins the matrix
+areas=$(sed -n '/^set(DARAN_UNIT_AREAS/,/^)/{/^ /p}' "$src/tests/unit/areas.cmake")
+[ -n "$areas" ] || { echo "no unit areas found in tests/unit/areas.cmake"; exit 1; }
 
 run_one() {
   name=$1
