@@ -61,7 +61,7 @@ image() { # name options-header
   config=""
   [ -n "$2" ] && config="-DDARAN_CONFIG_HEADER=$2"
   for source in bench/extensions/ext_main.c examples/port-brake/brake_port.c \
-      port/mps2-an386/startup.c port/mps2-an386/board.c; do
+      port/mps2-an386/startup.c port/mps2-an386/board.c port/mps2-an386/cortex_m.c; do
     # shellcheck disable=SC2086
     arm-none-eabi-gcc $cflags -Wall -Wextra -Werror $config -DDARAN_FW_SEMIHOSTING=1 \
       -Iinclude -Iport/mps2-an386 -Iexamples/port-brake -c "$source" \

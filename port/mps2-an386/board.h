@@ -7,8 +7,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Core clock of the AN386 image (and of QEMU's model of it). */
+/* Core clock of the AN386 image (and of QEMU's model of it); another board's
+ * build defines its own (port/boards/<board>/board.cmake). */
+#ifndef DARAN_BOARD_SYSCLK_HZ
 #define DARAN_BOARD_SYSCLK_HZ 25000000u
+#endif
 
 /* UART0, 8N1 at @p baud, receiver interrupt on (NVIC IRQ 0), transmitter
  * polled. */

@@ -1,13 +1,12 @@
 /* Board services of the BBC micro:bit (nRF51822: Cortex-M0, 16 MHz, no FPU,
  * no hardware divide), QEMU machine `microbit`, for the core's test images:
  * the API of port/mps2-an386/board.h over the nRF51's UART0 (not a CMSDK
- * UART: tasks, events and a TXD register), SysTick, PRIMASK and the
- * semihosting exit. */
+ * UART: tasks, events and a TXD register); the CPU's part is
+ * port/mps2-an386/cortex_m.c. */
 #include "board.h"
 
 #define REG32(addr) (*(volatile uint32_t *)(addr))
 
-#define NRF51_SYSCLK_HZ 16000000u
 
 /* nRF51 UART0 (nRF51 Series Reference Manual, UART chapter) */
 #define UART0_BASE 0x40002000u
@@ -29,10 +28,6 @@
 
 #define NVIC_ISER0 REG32(0xE000E100u)
 #define NVIC_ICER0 REG32(0xE000E180u)
-#define SYST_CSR REG32(0xE000E010u)
-#define SYST_RVR REG32(0xE000E014u)
-#define SYST_CVR REG32(0xE000E018u)
-#define SCB_SHPR3 REG32(0xE000ED20u)
 
 void daran_board_uart0_init(uint32_t baud)
 {
@@ -75,48 +70,4 @@ void daran_board_uart0_write(const char *bytes, size_t len)
         }
         UART_EVENTS_TXDRDY = 0u;
     }
-}
-
-void daran_board_systick_start(uint32_t hz)
-{
-    SYST_CSR = 0u;
-    SYST_RVR = NRF51_SYSCLK_HZ / hz - 1u;
-    SYST_CVR = 0u;
-    SCB_SHPR3 = (SCB_SHPR3 & 0x00FFFFFFu) | (0x80u << 24);
-    SYST_CSR = 7u;
-}
-
-void daran_board_wait_for_interrupt(void)
-{
-    __asm volatile("wfi" ::: "memory");
-}
-
-uint32_t daran_board_irq_save(void)
-{
-    uint32_t primask;
-    __asm volatile("mrs %0, primask\n\tcpsid i" : "=r"(primask)::"memory");
-    return primask;
-}
-
-void daran_board_irq_restore(uint32_t primask)
-{
-    __asm volatile("msr primask, %0" ::"r"(primask) : "memory");
-}
-
-/* Arm semihosting (BKPT 0xAB on M-profile, ARMv6-M included):
- * SYS_EXIT_EXTENDED with the status, which QEMU turns into its exit
- * status. */
-void daran_board_exit(int code)
-{
-    uint32_t block[2] = {0x20026u /* ADP_Stopped_ApplicationExit */, (uint32_t)code};
-    register uint32_t r0 __asm("r0") = 0x20u; /* SYS_EXIT_EXTENDED */
-    register const uint32_t *r1 __asm("r1") = block;
-    __asm volatile("bkpt 0xab" : "+r"(r0) : "r"(r1) : "memory");
-    for (;;) {
-    }
-}
-
-void daran_board_fatal(int code)
-{
-    daran_board_exit(code);
 }

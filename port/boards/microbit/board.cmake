@@ -8,7 +8,8 @@ set(DARAN_BOARD_QEMU_MACHINE microbit)
 # that much. daran-perf.elf needs and assumes only the real 16 KiB
 # (measure_insns.py runs it without this option).
 set(DARAN_BOARD_QEMU_ARGS -global nrf51-soc.sram-size=0x200000)
-set(DARAN_BOARD_SOURCES ${DARAN_MPS2_DIR}/startup.c ${DARAN_BOARD_DIR}/board.c)
+set(DARAN_BOARD_SOURCES ${DARAN_MPS2_DIR}/startup.c ${DARAN_BOARD_DIR}/board.c ${DARAN_MPS2_DIR}/cortex_m.c)
+set(DARAN_BOARD_DEFINITIONS DARAN_BOARD_SYSCLK_HZ=16000000u)
 set(DARAN_BOARD_INCLUDE_DIR ${DARAN_MPS2_DIR})
 set(DARAN_BOARD_LINKER_SCRIPT ${DARAN_BOARD_DIR}/nrf51.ld)
 set(DARAN_BOARD_TEST_MEMORY

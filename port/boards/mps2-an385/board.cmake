@@ -5,7 +5,7 @@
 # as they are (startup.c enables the FPU only when the CPU has one).
 set(DARAN_BOARD_QEMU_MACHINE mps2-an385)
 set(DARAN_BOARD_QEMU_ARGS "")
-set(DARAN_BOARD_SOURCES ${DARAN_MPS2_DIR}/startup.c ${DARAN_MPS2_DIR}/board.c)
+set(DARAN_BOARD_SOURCES ${DARAN_MPS2_DIR}/startup.c ${DARAN_MPS2_DIR}/board.c ${DARAN_MPS2_DIR}/cortex_m.c)
 set(DARAN_BOARD_INCLUDE_DIR ${DARAN_MPS2_DIR})
 set(DARAN_BOARD_LINKER_SCRIPT ${DARAN_MPS2_DIR}/mps2_an386.ld)
 set(DARAN_BOARD_TEST_MEMORY

@@ -1,7 +1,7 @@
 /* Board services of the Arm MPS2+ with the AN505 FPGA image (Cortex-M33 in
  * an SSE-200 subsystem, QEMU mps2-an505) for the core's test images: the
- * API of port/mps2-an386/board.h over the board's CMSDK APB UART0, SysTick,
- * PRIMASK and the semihosting exit.
+ * API of port/mps2-an386/board.h over the board's CMSDK APB UART0; the CPU's
+ * part is port/mps2-an386/cortex_m.c.
  *
  * The CPU leaves reset in the Secure state and stays there: peripherals are
  * reached through their Secure aliases (address bit 28 set; UART0 at
@@ -15,7 +15,6 @@
 #define REG32(addr) (*(volatile uint32_t *)(addr))
 
 /* Clock of the AN505 image (QEMU: 20 MHz, "cpuclk"). */
-#define AN505_SYSCLK_HZ 20000000u
 
 /* CMSDK APB UART0, Secure alias */
 #define UART0_BASE 0x50200000u
@@ -32,14 +31,10 @@
 #define UART_INT_RX (1u << 1)
 #define UART_INT_RX_OVERRUN (1u << 3)
 
-#define SYST_CSR REG32(0xE000E010u)
-#define SYST_RVR REG32(0xE000E014u)
-#define SYST_CVR REG32(0xE000E018u)
-#define SCB_SHPR3 REG32(0xE000ED20u)
 
 void daran_board_uart0_init(uint32_t baud)
 {
-    uint32_t div = AN505_SYSCLK_HZ / baud;
+    uint32_t div = DARAN_BOARD_SYSCLK_HZ / baud;
     UART_CTRL = 0u;
     UART_BAUDDIV = div >= 16u ? div : 16u; /* the UART's minimum divisor */
     UART_INTSTATUS = UART_INT_RX | UART_INT_RX_OVERRUN;
@@ -71,47 +66,4 @@ void daran_board_uart0_write(const char *bytes, size_t len)
         }
         UART_DATA = (uint8_t)bytes[i];
     }
-}
-
-void daran_board_systick_start(uint32_t hz)
-{
-    SYST_CSR = 0u;
-    SYST_RVR = AN505_SYSCLK_HZ / hz - 1u;
-    SYST_CVR = 0u;
-    SCB_SHPR3 = (SCB_SHPR3 & 0x00FFFFFFu) | (0x80u << 24);
-    SYST_CSR = 7u;
-}
-
-void daran_board_wait_for_interrupt(void)
-{
-    __asm volatile("wfi" ::: "memory");
-}
-
-uint32_t daran_board_irq_save(void)
-{
-    uint32_t primask;
-    __asm volatile("mrs %0, primask\n\tcpsid i" : "=r"(primask)::"memory");
-    return primask;
-}
-
-void daran_board_irq_restore(uint32_t primask)
-{
-    __asm volatile("msr primask, %0" ::"r"(primask) : "memory");
-}
-
-/* Arm semihosting (BKPT 0xAB on M-profile): SYS_EXIT_EXTENDED with the
- * status, which QEMU turns into its exit status. */
-void daran_board_exit(int code)
-{
-    uint32_t block[2] = {0x20026u /* ADP_Stopped_ApplicationExit */, (uint32_t)code};
-    register uint32_t r0 __asm("r0") = 0x20u; /* SYS_EXIT_EXTENDED */
-    register const uint32_t *r1 __asm("r1") = block;
-    __asm volatile("bkpt 0xab" : "+r"(r0) : "r"(r1) : "memory");
-    for (;;) {
-    }
-}
-
-void daran_board_fatal(int code)
-{
-    daran_board_exit(code);
 }
