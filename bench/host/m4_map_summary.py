@@ -33,7 +33,8 @@ def size(elf):
     return flash, ram
 
 
-SECTION = re.compile(r"^ (\.\S+)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+)$")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from link_map import kept_sections  # noqa: E402
 
 
 def by_origin(mapfile, members_by_archive=None):
@@ -41,47 +42,26 @@ def by_origin(mapfile, members_by_archive=None):
     if members_by_archive is None:
         members_by_archive = {}
     totals = {}
-    kept = False
-    pending = None
-    with open(mapfile) as f:
-        for raw in f:
-            line = raw.rstrip("\n")
-            if line.startswith("Linker script and memory map"):
-                kept = True
-                continue
-            if not kept:
-                continue
-            if pending is not None and re.match(r"^\s+0x[0-9a-f]+\s+0x[0-9a-f]+\s+\S+$", line):
-                line = " " + pending + line
-                pending = None
-            elif re.match(r"^ \.\S+$", line):
-                pending = line.strip()
-                continue
-            else:
-                pending = None
-            m = SECTION.match(line)
-            if not m:
-                continue
-            section, addr, n, origin = m.group(1) or "", int(m.group(2), 16), int(m.group(3), 16), m.group(4)
-            if n == 0 or section.startswith((".debug", ".comment", ".ARM.attributes")):
-                continue
-            if section.startswith((".bss", "COMMON", ".heap", ".stack", ".noinit")):
-                continue  # RAM only: this table is about flash
-            if addr == 0:
-                continue
-            name = os.path.basename(origin)
-            if "(" in name:
-                archive, member = name.split("(", 1)
-                members = members_by_archive.setdefault(archive, {})
-                member = member.rstrip(")")
-                members[member] = members.get(member, 0) + n
-                name = archive
-            elif "/obj/" in origin:
-                name = origin.split("/obj/")[1].split("/")[0]
-                name = "main" if name.startswith("main-") else name
-            else:
-                name = "startup (" + name + ")" if name.startswith("crt") else name
-            totals[name] = totals.get(name, 0) + n
+    for section, addr, n, origin in kept_sections(mapfile):
+        if n == 0 or section.startswith((".debug", ".comment", ".ARM.attributes")):
+            continue
+        if section.startswith((".bss", "COMMON", ".heap", ".stack", ".noinit")):
+            continue  # RAM only: this table is about flash
+        if addr == 0:
+            continue
+        name = os.path.basename(origin)
+        if "(" in name:
+            archive, member = name.split("(", 1)
+            members = members_by_archive.setdefault(archive, {})
+            member = member.rstrip(")")
+            members[member] = members.get(member, 0) + n
+            name = archive
+        elif "/obj/" in origin:
+            name = origin.split("/obj/")[1].split("/")[0]
+            name = "main" if name.startswith("main-") else name
+        else:
+            name = "startup (" + name + ")" if name.startswith("crt") else name
+        totals[name] = totals.get(name, 0) + n
     return totals
 
 

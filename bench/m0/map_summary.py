@@ -3,35 +3,15 @@
 the measuring program (obj/main), and each library member (libgcc's soft
 float, libm, libc), from the link map's kept input sections."""
 import os
-import re
 import sys
 
-SECTION = re.compile(r"^ (\.\S+)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+)$")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from link_map import kept_sections  # noqa: E402
 
 
 def kept(mapfile):
     totals = {}
-    started = False
-    pending = None
-    for raw in open(mapfile):
-        line = raw.rstrip("\n")
-        if line.startswith("Linker script and memory map"):
-            started = True
-            continue
-        if not started:
-            continue
-        if pending is not None and re.match(r"^\s+0x[0-9a-f]+\s+0x[0-9a-f]+\s+\S+$", line):
-            line = " " + pending + line
-            pending = None
-        elif re.match(r"^ \.\S+$", line):
-            pending = line.strip()
-            continue
-        else:
-            pending = None
-        m = SECTION.match(line)
-        if not m:
-            continue
-        section, addr, n, origin = m.group(1) or "", int(m.group(2), 16), int(m.group(3), 16), m.group(4)
+    for section, addr, n, origin in kept_sections(mapfile):
         if n == 0 or addr >= 0x20000000 and not section.startswith(".data"):
             continue
         if section.startswith((".debug", ".comment", ".ARM.attributes", ".bss")):
