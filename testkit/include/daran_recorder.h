@@ -1,0 +1,122 @@
+/* The recording HAL: a test double that logs every HAL call the core makes,
+ * with its arguments and result, and either serves the properties from its
+ * own store (no inner HAL: a drive with no physics) or passes each call on to
+ * an inner HAL (a shim around the HAL under test). It also captures the
+ * replies the core writes, and can make the Nth call of chosen kinds fail.
+ *
+ * Plain C (host or target): no heap; stdio only in the describe functions.
+ * Compile it against the same options header as the core it records. The
+ * Unity assertions over it are in daran_recorder_unity.h. */
+#ifndef DARAN_RECORDER_H
+#define DARAN_RECORDER_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "daran_ascii.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#ifndef DARAN_RECORDER_CALLS_MAX
+/** Calls kept in the log; later ones are counted in n_dropped. */
+#define DARAN_RECORDER_CALLS_MAX 64
+#endif
+#ifndef DARAN_RECORDER_OUT_MAX
+/** Reply bytes kept; later ones are counted in out_dropped. */
+#define DARAN_RECORDER_OUT_MAX 4096
+#endif
+
+/** The kind of a logged HAL call. */
+typedef enum daran_call_kind {
+    DARAN_CALL_GET,
+    DARAN_CALL_SET,
+    DARAN_CALL_MOVE,
+    DARAN_CALL_ACTION
+} daran_call_kind_t;
+
+/** daran_recorder_fail() masks. */
+#define DARAN_RECORDER_FAIL_GET (1u << DARAN_CALL_GET)
+#define DARAN_RECORDER_FAIL_SET (1u << DARAN_CALL_SET)
+#define DARAN_RECORDER_FAIL_MOVE (1u << DARAN_CALL_MOVE)
+#define DARAN_RECORDER_FAIL_ACTION (1u << DARAN_CALL_ACTION)
+
+/** One logged call. */
+typedef struct daran_call {
+    daran_call_kind_t kind;
+    daran_prop_t prop;     /**< GET, SET */
+    daran_value_t value;   /**< SET: the value written; GET: the value read */
+    daran_move_t move;     /**< MOVE */
+    daran_action_t action; /**< ACTION */
+    daran_result_t result; /**< what the call returned */
+} daran_call_t;
+
+typedef struct daran_recorder {
+    const daran_hal_t *inner; /**< NULL: the store below serves the calls */
+    void *inner_ctx;
+    daran_value_t store[DARAN_PROP_COUNT];
+    bool log_gets;            /**< log GET calls too (default false: counted only) */
+
+    daran_call_t calls[DARAN_RECORDER_CALLS_MAX];
+    size_t n_calls;           /**< calls logged (<= DARAN_RECORDER_CALLS_MAX) */
+    size_t n_dropped;         /**< calls past the log's end */
+    size_t n_gets;            /**< GET calls, logged or not */
+    size_t n_mutations;       /**< SET + MOVE + ACTION calls, logged or not */
+
+    unsigned fail_mask;
+    unsigned fail_countdown;
+    daran_result_t fail_result;
+    int fail_prop;
+
+    char out[DARAN_RECORDER_OUT_MAX + 1]; /**< replies, NUL-terminated */
+    size_t out_len;
+    size_t out_dropped;
+    size_t n_replies;         /**< reply lines written */
+} daran_recorder_t;
+
+/** The recording HAL; its context is a daran_recorder_t. */
+extern const daran_hal_t daran_recorder_hal;
+
+/** Record calls to @p inner (with @p inner_ctx), or, with @p inner NULL,
+ * serve them from the store: every value 0 but node id @p node_id... see
+ * daran_recorder_init_store(). Forgets everything. */
+void daran_recorder_init(daran_recorder_t *rec, const daran_hal_t *inner, void *inner_ctx);
+
+/** The store double: no inner HAL, every value 0 except node id @p node_id
+ * and closed loop (requested and current state 8), so motion is accepted. */
+void daran_recorder_init_store(daran_recorder_t *rec, uint32_t node_id);
+
+/** Forget the calls and replies (the store and the fault injection stay). */
+void daran_recorder_clear(daran_recorder_t *rec);
+
+/** A reply sink for daran_init(): its ctx is a daran_recorder_t. */
+void daran_recorder_write(void *ctx, const char *line, size_t len);
+
+/** The @p nth (1-based) call among the kinds in @p mask returns @p result
+ * without reaching the inner HAL or the store. @p prop >= 0 counts only
+ * GET/SET of that property. nth 0 turns the injection off. */
+void daran_recorder_fail(daran_recorder_t *rec, unsigned mask, unsigned nth,
+                         daran_result_t result, int prop);
+
+/** SET, MOVE and ACTION calls since the last clear. */
+size_t daran_recorder_mutations(const daran_recorder_t *rec);
+/** True when no SET, MOVE or ACTION call was made since the last clear. */
+bool daran_recorder_no_effect(const daran_recorder_t *rec);
+/** Logged calls of @p kind (and, for ACTION, of @p action; pass -1 for any). */
+size_t daran_recorder_count(const daran_recorder_t *rec, daran_call_kind_t kind, int action);
+/** The first logged call of @p kind, or NULL. */
+const daran_call_t *daran_recorder_first(const daran_recorder_t *rec, daran_call_kind_t kind);
+
+/** One call as text ("set axis0.controller.config.pos_gain 20 -> ok"), NUL
+ * terminated, cut to @p size. Returns the length it would have had. */
+size_t daran_call_describe(const daran_call_t *call, char *buf, size_t size);
+/** Every logged call, one per line, cut to @p size ("none" when none). */
+size_t daran_recorder_describe(const daran_recorder_t *rec, char *buf, size_t size);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DARAN_RECORDER_H */
