@@ -7,19 +7,13 @@ include_guard(GLOBAL)
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-# A project that pulls daran-ascii in with add_subdirectory() usually does not
-# want our files in its own install tree.
-option(DARAN_INSTALL "Generate the install rules of daran-ascii" ${_daran_top_level})
 if(NOT DARAN_INSTALL)
   return()
 endif()
 
-set(DARAN_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/daran_ascii"
-    CACHE STRING "Where the CMake package files go, relative to the prefix")
-mark_as_advanced(DARAN_INSTALL_CMAKEDIR)
 
 set(_daran_public_headers)
-foreach(_h IN ITEMS daran_ascii.h daran_config.h daran_drive.h daran_hal.h daran_port.h
+foreach(_h IN ITEMS daran_ascii.h daran_build.h daran_config.h daran_drive.h daran_hal.h daran_port.h
                     daran_properties.h daran_result.h daran_version.h)
   list(APPEND _daran_public_headers "${PROJECT_SOURCE_DIR}/include/${_h}")
 endforeach()
@@ -74,7 +68,8 @@ install(EXPORT daran_asciiTargets
 configure_package_config_file(
   "${CMAKE_CURRENT_LIST_DIR}/daran_asciiConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/daran_asciiConfig.cmake"
-  INSTALL_DESTINATION "${DARAN_INSTALL_CMAKEDIR}")
+  INSTALL_DESTINATION "${DARAN_INSTALL_CMAKEDIR}"
+  PATH_VARS DARAN_INSTALL_DATADIR CMAKE_INSTALL_INCLUDEDIR)
 # 0.x.y: SameMajorVersion accepts any 0.* for a request of 0.*; the version
 # file still refuses a library built for another pointer size (host vs MCU).
 write_basic_package_version_file(
@@ -85,6 +80,22 @@ install(FILES
   "${PROJECT_BINARY_DIR}/daran_asciiConfig.cmake"
   "${PROJECT_BINARY_DIR}/daran_asciiConfigVersion.cmake"
   DESTINATION "${DARAN_INSTALL_CMAKEDIR}")
+
+# What daran_ascii_add_library() compiles for an adopter's options header:
+# the core's sources and the property-index generator, in the source tree's
+# layout under share/daran_ascii, and the CMake modules with the package's
+# functions (each folder installs its own sources: port/sim, testkit).
+file(GLOB _daran_core_files "${PROJECT_SOURCE_DIR}/src/*.c" "${PROJECT_SOURCE_DIR}/src/*.h")
+install(FILES ${_daran_core_files} DESTINATION "${DARAN_INSTALL_DATADIR}/src")
+install(PROGRAMS "${PROJECT_SOURCE_DIR}/tools/gen_property_index.py"
+        DESTINATION "${DARAN_INSTALL_DATADIR}/tools")
+set(_daran_modules)
+foreach(_module IN ITEMS DaranAddLibrary DaranSim DaranTestSupport DaranConformance DaranFuzzTarget)
+  if(EXISTS "${PROJECT_SOURCE_DIR}/cmake/${_module}.cmake")
+    list(APPEND _daran_modules "${PROJECT_SOURCE_DIR}/cmake/${_module}.cmake")
+  endif()
+endforeach()
+install(FILES ${_daran_modules} DESTINATION "${DARAN_INSTALL_CMAKEDIR}")
 
 # pkg-config: the prefix is found from the .pc file's own place, so the tree
 # can be installed with --prefix or moved after installation.

@@ -11,24 +11,46 @@ option(DARAN_BUILD_TESTS "Build the unit and transcript tests" ${_daran_top_leve
 option(DARAN_BUILD_SIM "Build the simulated drive (host only)" ${_daran_top_level})
 option(DARAN_BUILD_DEMO "Build the example programs" ${_daran_top_level})
 option(DARAN_SANITIZE "Build everything with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
-set(DARAN_CONFIG_HEADER "" CACHE STRING "A user options header included by daran_config.h")
-set(DARAN_PROPERTY_OMIT "" CACHE STRING "Property ids (DARAN_PROP_<ID> without the prefix) this build leaves out; their paths answer invalid property")
+# A project that pulls the library in with add_subdirectory() may name its
+# header with a plain set() before it (docs/porting.md 5.1). Under policy
+# CMP0126 OLD (any project requiring CMake < 3.21) declaring the cache entry
+# would drop that normal variable and build with the vendor defaults, so the
+# entry takes the variable's value and the NEW behaviour is asked for where
+# CMake knows it.
+if(POLICY CMP0126)
+  cmake_policy(SET CMP0126 NEW)
+endif()
+set(DARAN_CONFIG_HEADER "${DARAN_CONFIG_HEADER}" CACHE STRING "A user options header included by daran_config.h")
+set(DARAN_PROPERTY_OMIT "${DARAN_PROPERTY_OMIT}" CACHE STRING "Property ids (DARAN_PROP_<ID> without the prefix) this build leaves out; their paths answer invalid property")
 
 if(DARAN_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
-# The warnings the core must build clean under, as errors (gcc, clang, arm-none-eabi-gcc).
-set(DARAN_STRICT_WARNINGS
-    -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wstrict-prototypes
-    -Wmissing-prototypes -Wcast-qual -Wundef -Werror)
+# DARAN_STRICT_WARNINGS and daran_ascii_add_library(); the package's root
+# for the functions that compile its sources (here: this source tree).
+include(DaranAddLibrary)
+daran_ascii_set_root("${PROJECT_SOURCE_DIR}" "${PROJECT_SOURCE_DIR}/include")
+set(DARAN_CORE_C_STANDARD 11 CACHE STRING "C standard the core is compiled with (99 or 11)")
 
 function(daran_strict_warnings target)
-  target_compile_options(${target} PRIVATE ${DARAN_STRICT_WARNINGS})
+  daran_ascii_strict_warnings(${target})
 endfunction()
 
 option(DARAN_BUILD_FUZZ "Build the libFuzzer harnesses (clang only)" OFF)
 option(DARAN_BUILD_BENCH "Build the benchmarks" ${_daran_top_level})
 option(DARAN_BUILD_FIRMWARE "Cross builds: build the example firmware and its QEMU tests" ${_daran_top_level})
 option(DARAN_STACK_USAGE "Write the core's frame sizes and call graph (-fstack-usage -fcallgraph-info, GCC 12+) for a stack budget" OFF)
+
+# Install rules (cmake/DaranInstall.cmake and each folder's own): a project
+# that pulls daran-ascii in with add_subdirectory() usually does not want our
+# files in its own install tree.
+option(DARAN_INSTALL "Generate the install rules of daran-ascii" ${_daran_top_level})
+include(GNUInstallDirs)
+set(DARAN_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/daran_ascii"
+    CACHE STRING "Where the CMake package files go, relative to the prefix")
+mark_as_advanced(DARAN_INSTALL_CMAKEDIR)
+# The sources an adopter compiles for their own options (the core, the
+# generator, the simulated drive, the test kit), in the source tree's layout.
+set(DARAN_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/daran_ascii")
