@@ -240,7 +240,14 @@ typedef enum daran_prop_type {
  * `w` checks (src/property_table.c reads it): a sign condition (">=0",
  * ">0", "<=0"), an interval ("a..b"), a set ("{a,b,...}" or "a|b", one
  * value "a"), or "" for any value of the type. Float properties take the
- * sign conditions only. */
+ * sign conditions and intervals ("0..1", "-0.5..2.5e3": decimal ends, the
+ * value compared as the float it parsed to, both ends included); integer
+ * ones take integer ends.
+ *
+ * A port adds its own in its options header, in the same form:
+ *   DARAN_PORT_RANGE_LIST(X)  X(NAME, "text") for its rows' RANGE column;
+ * 32 ranges in all (tools/gen_property_index.py refuses more, and a range a
+ * row's type cannot take). */
 #define DARAN_RANGE_LIST(X) \
     X(NONE,         "") \
     X(NON_NEGATIVE, ">=0") \
@@ -267,6 +274,9 @@ typedef enum daran_range {
 /** @cond INTERNAL */
 #define DARAN_RANGE_ENUM_(name, text) DARAN_RANGE_##name,
     DARAN_RANGE_LIST(DARAN_RANGE_ENUM_)
+#ifdef DARAN_PORT_RANGE_LIST
+    DARAN_PORT_RANGE_LIST(DARAN_RANGE_ENUM_)
+#endif
 #undef DARAN_RANGE_ENUM_
 /** @endcond */
     DARAN_RANGE_COUNT /**< how many ranges there are; not a range */

@@ -3,6 +3,8 @@
  * range-checked against the table row. */
 #include "internal.h"
 
+#include "property_features.h"
+
 daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request)
 {
     return daran_reply_properties(drive, &request->prop, 1);
@@ -34,9 +36,14 @@ static daran_result_t parse_value(daran_property_t row, const daran_field_t *fie
     daran_prop_type_t type = DARAN_PROPERTY_TYPE(row);
     if (type == DARAN_TYPE_F32) {
         daran_result_t result = daran_field_f32(field, &value->f32);
-        /* float ranges are sign conditions: test the sign, -0 counting as 0 (D27) */
+#if DARAN_F32_INTERVALS
+        if (result == DARAN_OK && !daran_range_holds_f32(range, value->f32)) {
+#else
+        /* this build's float ranges are sign conditions: test the sign, -0
+         * counting as 0 (D27) */
         int64_t sign = value->f32 > 0.0f ? 1 : (value->f32 < 0.0f ? -1 : 0);
         if (result == DARAN_OK && !daran_range_holds(range, sign)) {
+#endif
             result = DARAN_ERR_OUT_OF_RANGE;
         }
         return result;

@@ -146,6 +146,9 @@ daran_property_t daran_property_row(daran_prop_t prop);
  * it: `w` checks with the very text discovery shows. */
 const char *daran_range_text(daran_range_t range);
 bool daran_range_holds(daran_range_t range, int64_t value);
+/* Does a float satisfy a float row's range (a sign condition, or an
+ * interval "lo..hi" when the build has one)? */
+bool daran_range_holds_f32(daran_range_t range, float value);
 
 /* Discovery: every property this build knows, in path order: start with
  * *cursor 0; DARAN_PROP_COUNT after the last. */

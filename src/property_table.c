@@ -11,6 +11,7 @@
 #define DARAN_ATTR(type, access, scope, range, unit) \
     (uint16_t)((type) | (access) << 3 | (scope) << 4 | (range) << 5 | (unit) << 10)
 #include "property_index.h"
+#include "property_features.h"
 
 /* The packed tables' entries (see the generated header for the layout). */
 static unsigned word_end(unsigned n)
@@ -44,7 +45,11 @@ daran_property_t daran_property_row(daran_prop_t prop)
  * (daran_range_holds reads it): one source for both, NUL-separated in
  * daran_range_t order because both come from DARAN_RANGE_LIST. */
 #define DARAN_RANGE_TEXT_(name, text) text "\0"
-static const char range_text[] = DARAN_RANGE_LIST(DARAN_RANGE_TEXT_);
+#ifndef DARAN_PORT_RANGE_LIST
+#define DARAN_PORT_RANGE_LIST(X)
+#endif
+static const char range_text[] = DARAN_RANGE_LIST(DARAN_RANGE_TEXT_)
+    DARAN_PORT_RANGE_LIST(DARAN_RANGE_TEXT_);
 #undef DARAN_RANGE_TEXT_
 
 const char *daran_range_text(daran_range_t range)
@@ -96,6 +101,32 @@ bool daran_range_holds(daran_range_t range, int64_t value)
         t++;
     }
 }
+
+#if DARAN_F32_INTERVALS
+bool daran_range_holds_f32(daran_range_t range, float value)
+{
+    const char *t = daran_range_text(range);
+    if (*t == '-' || (*t >= '0' && *t <= '9') || *t == '.') {
+        /* "lo..hi": the ends as the floats they parse to, both included */
+        size_t dots = 0;
+        while (t[dots] != '\0' && !(t[dots] == '.' && t[dots + 1u] == '.')) {
+            dots++;
+        }
+        float low;
+        float high;
+        const char *high_text = t + dots + 2u;
+        size_t high_len = 0;
+        while (high_text[high_len] != '\0') {
+            high_len++;
+        }
+        return t[dots] != '\0' && daran_parse_f32(t, dots, &low) == DARAN_OK &&
+               daran_parse_f32(high_text, high_len, &high) == DARAN_OK && value >= low &&
+               value <= high;
+    }
+    /* the sign conditions: -0 counts as 0 (D27) */
+    return daran_range_holds(range, value > 0.0f ? 1 : (value < 0.0f ? -1 : 0));
+}
+#endif
 
 daran_prop_t daran_discovery_next(size_t *cursor)
 {

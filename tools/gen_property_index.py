@@ -30,6 +30,7 @@ Usage: gen_property_index.py --list include/daran_properties.h --out FILE
                              [--config OPTIONS_HEADER] [--omit ID,ID,...] [--stats]
 """
 import argparse
+import os
 import re
 import sys
 
@@ -70,6 +71,61 @@ def read_rows(path, name="DARAN_PROPERTY_LIST", required=True):
 def read_omitted(path):
     body = macro_body(open(path, encoding="ascii").read(), "DARAN_OMIT_PROPERTIES")
     return set(re.findall(r"X\(\s*(\w+)\s*\)", body)) if body else set()
+
+
+# Where each row and range came from, so a refusal names the adopter's
+# header and row rather than the library's list.
+ORIGIN = {}
+
+
+def refuse(ident, why):
+    """Stop with a message naming the file and the row (or option) at fault."""
+    where = ORIGIN.get(ident)
+    if where:
+        sys.exit("gen_property_index: %s: row %s: %s" % (where, ident, why))
+    sys.exit("gen_property_index: %s: %s" % (ident, why))
+
+
+RANGE_RE = re.compile(r'X\(\s*(\w+)\s*,\s*((?:"[^"]*"|\s|DARAN_RANGE_STR\(\s*\w+\s*\))+)\)')
+NUMBER_RE = re.compile(r"^-?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
+
+
+def read_ranges(path, name):
+    """[(NAME, text)] of `#define name(X)` in path; a DARAN_RANGE_STR(MACRO)
+    piece is kept as {MACRO} (its value is the core's business)."""
+    body = macro_body(open(path, encoding="ascii").read(), name)
+    if body is None:
+        return []
+    ranges = []
+    for ident, rest in RANGE_RE.findall(body):
+        pieces = re.findall(r'"([^"]*)"|DARAN_RANGE_STR\(\s*(\w+)\s*\)', rest)
+        ranges.append((ident, "".join(text if text or not macro else "{%s}" % macro
+                                      for text, macro in pieces)))
+    return ranges
+
+
+def check_range(ident, text, typ):
+    """Refuse a range the core cannot check for a row of type typ."""
+    if text in ("", ">=0", ">0", "<=0"):
+        return
+    if "{" in text and "}" in text and text.startswith("1.."):
+        if typ == "F32":
+            refuse(ident, "an f32 row takes a sign condition or an interval lo..hi, not %r" % text)
+        return  # the node id range: its upper end is an option
+    if ".." in text:
+        low, _, high = text.partition("..")
+        if not NUMBER_RE.match(low) or not NUMBER_RE.match(high):
+            refuse(ident, "range %r: both ends of lo..hi must be numbers" % text)
+        if float(low) > float(high):
+            refuse(ident, "range %r: lo is above hi" % text)
+        if typ != "F32" and not (re.match(r"^-?\d+$", low) and re.match(r"^-?\d+$", high)):
+            refuse(ident, "range %r: an integer row takes integer ends" % text)
+        return
+    if typ == "F32":
+        refuse(ident, "an f32 row takes a sign condition or an interval lo..hi, not %r" % text)
+    items = text.strip("{}").replace("|", ",").split(",")
+    if not all(re.match(r"^-?\d+$", v) for v in items):
+        refuse(ident, "range %r: a set lists integers" % text)
 
 
 def fnv(seed, scope, data):
@@ -127,32 +183,38 @@ def c_string(data):
     return '"' + data.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
-def generate(rows, omit):
+def generate(rows, omit, ranges):
     ids = [r[0] for r in rows]
     unknown = sorted(set(omit) - set(ids))
     if unknown:
-        sys.exit("gen_property_index: --omit names unknown properties: " + " ".join(unknown))
+        sys.exit("gen_property_index: DARAN_PROPERTY_OMIT (--omit) names unknown properties: " +
+                 " ".join(unknown))
     if len(set(ids)) != len(ids):
-        sys.exit("gen_property_index: a property id appears twice")
-    float_ranges = {"NONE", "NON_NEGATIVE", "POSITIVE", "NON_POSITIVE"}
+        twice = sorted({i for i in ids if ids.count(i) > 1})
+        refuse(twice[0], "the property id appears twice")
+    range_text = dict(ranges)
+    if len(ranges) > 32:
+        refuse(ranges[32][0], "at most 32 ranges in all (5 bits of the attribute word)")
     for ident, path, scope, typ, access, rng, unit in rows:
         # what src/commands_property.c can check for each type
-        if typ == "F32" and rng not in float_ranges:
-            sys.exit("gen_property_index: %s is f32: its range must be one of %s" % (ident, sorted(float_ranges)))
+        if rng not in range_text:
+            refuse(ident, "range %s is neither in DARAN_RANGE_LIST nor in DARAN_PORT_RANGE_LIST" % rng)
         if typ == "BOOL" and rng != "BOOL":
-            sys.exit("gen_property_index: %s is bool: its range must be BOOL" % ident)
+            refuse(ident, "a bool row takes the range BOOL, not %s" % rng)
         if typ == "U64" and access == "RW" and rng != "NONE":
-            sys.exit("gen_property_index: %s is a writable u64: it takes no range" % ident)
+            refuse(ident, "a writable u64 row takes no range (NONE), not %s" % rng)
+        if typ != "BOOL":
+            check_range(ident, range_text[rng], typ)
         if len(path) > 64:
-            sys.exit("gen_property_index: %s: paths are 64 characters at most (DARAN_PATH_MAX)" % ident)
+            refuse(ident, "path %s: paths are 64 characters at most (DARAN_PATH_MAX)" % path)
     kept = [i for i, r in enumerate(rows) if r[0] not in omit]
-    seen = set()
+    seen = {}
     for i in kept:
         key = (rows[i][2], rows[i][1])
         if key in seen:
-            sys.exit("gen_property_index: path %s appears twice (a port row must not reuse a vendor path; "
-                     "omit the vendor row first)" % rows[i][1])
-        seen.add(key)
+            refuse(rows[i][0], "path %s appears twice (also row %s): a port row must not reuse a "
+                               "vendor path; omit the vendor row first" % (rows[i][1], seen[key]))
+        seen[key] = rows[i][0]
 
     def words_of(path):
         return re.split(r"[._]", path)
@@ -174,7 +236,7 @@ def generate(rows, omit):
     for i in kept:
         parts = words_of(rows[i][1])
         if len(parts) > MAX_WORDS or "" in parts:
-            sys.exit("gen_property_index: %s: 1..%d non-empty words" % (rows[i][1], MAX_WORDS))
+            refuse(rows[i][0], "path %s: 1..%d non-empty words" % (rows[i][1], MAX_WORDS))
         keys.append((1 if rows[i][2] == "AXIS" else 0, rows[i][1].encode()))
     seed, bucket_bits, displacement, taken, slots = build_hash(keys)
     if len(rows) >= 0xFFFF:
@@ -331,12 +393,22 @@ def generate(rows, omit):
             out.append("    " + ", ".join(str(x) for x in order[k:k + 16]) + ",")
         out.append("};")
     out.append("#define DARAN_DISCOVERY_COUNT %du" % len(order))
+
     out.append("")
     out.append("#endif /* DARAN_PROPERTY_INDEX_H */")
     stats = {"rows": len(rows), "kept": len(kept), "words": len(words), "text": len(text), "refs": len(refs),
              "alphabet": len(alphabet),
              "slots": slots, "buckets": 1 << bucket_bits, "seed": seed}
-    return "\n".join(out) + "\n", stats
+    intervals = any(rows[i][3] == "F32" and ".." in range_text[rows[i][5]] for i in kept)
+    features = "\n".join([
+        "/* Generated by tools/gen_property_index.py: what this build's table needs",
+        " * compiled in, for the files that must not include the tables. */",
+        "#ifndef DARAN_PROPERTY_FEATURES_H",
+        "#define DARAN_PROPERTY_FEATURES_H",
+        "/* 1: an f32 row has an interval range lo..hi (else f32 ranges are sign conditions). */",
+        "#define DARAN_F32_INTERVALS %d" % (1 if intervals else 0),
+        "#endif /* DARAN_PROPERTY_FEATURES_H */", ""])
+    return "\n".join(out) + "\n", features, stats
 
 
 def main():
@@ -349,32 +421,53 @@ def main():
     args = parser.parse_args()
     omit = {x for x in re.split(r"[,;\s]+", args.omit) if x}
     rows = read_rows(args.list)
+    ranges = read_ranges(args.list, "DARAN_RANGE_LIST")
     vendor = {r[0] for r in rows}
+    vendor_ranges = {r[0] for r in ranges}
+    for r in rows:
+        ORIGIN[r[0]] = "%s (DARAN_PROPERTY_LIST)" % args.list
+    for r in ranges:
+        ORIGIN["range " + r[0]] = "%s (DARAN_RANGE_LIST)" % args.list
     if args.config:
+        port_ranges = read_ranges(args.config, "DARAN_PORT_RANGE_LIST")
+        for r in port_ranges:
+            if r[0] in vendor_ranges:
+                sys.exit("gen_property_index: %s (DARAN_PORT_RANGE_LIST): range %s reuses a vendor "
+                         "range name" % (args.config, r[0]))
+        ranges += port_ranges
         port_rows = read_rows(args.config, "DARAN_PORT_PROPERTY_LIST", required=False)
         for r in port_rows:
             if r[0] in vendor:
-                sys.exit("gen_property_index: port property %s reuses a vendor id" % r[0])
+                sys.exit("gen_property_index: %s (DARAN_PORT_PROPERTY_LIST): row %s reuses a vendor id"
+                         % (args.config, r[0]))
+            ORIGIN[r[0]] = "%s (DARAN_PORT_PROPERTY_LIST)" % args.config
         rows += port_rows
         port_omit = read_omitted(args.config)
         unknown = sorted(port_omit - vendor)
         if unknown:
-            sys.exit("gen_property_index: DARAN_OMIT_PROPERTIES names no vendor property: " + " ".join(unknown))
+            sys.exit("gen_property_index: %s (DARAN_OMIT_PROPERTIES): names no vendor property: %s"
+                     % (args.config, " ".join(unknown)))
         omit |= port_omit
     # `e` names each error register by its path: they cannot be left out
     needed = {"AXIS_ERROR", "MOTOR_ERROR", "ENCODER_ERROR", "CONTROLLER_ERROR",
               "FET_THERMISTOR_ERROR", "MOTOR_THERMISTOR_ERROR", "CAN_ERROR"}
     if omit & needed:
-        sys.exit("gen_property_index: the error registers cannot be left out (`e` names them): " +
-                 " ".join(sorted(omit & needed)))
-    text, stats = generate(rows, omit)
-    try:
-        old = open(args.out, encoding="ascii").read()
-    except OSError:
-        old = None
-    if old != text:
-        with open(args.out, "w", encoding="ascii") as f:
-            f.write(text)
+        where = args.config + " (DARAN_OMIT_PROPERTIES) or DARAN_PROPERTY_OMIT" if args.config \
+            else "DARAN_PROPERTY_OMIT (--omit)"
+        sys.exit("gen_property_index: %s: the error registers cannot be left out (`e` names them): %s"
+                 % (where, " ".join(sorted(omit & needed))))
+    text, features, stats = generate(rows, omit, ranges)
+    # property_features.h goes beside the index; each is rewritten only
+    # when it changes, so the build does not recompile for nothing.
+    features_out = os.path.join(os.path.dirname(os.path.abspath(args.out)), "property_features.h")
+    for path, content in ((args.out, text), (features_out, features)):
+        try:
+            old = open(path, encoding="ascii").read()
+        except OSError:
+            old = None
+        if old != content:
+            with open(path, "w", encoding="ascii") as f:
+                f.write(content)
     if args.stats:
         print(" ".join("%s=%s" % kv for kv in stats.items()))
 
