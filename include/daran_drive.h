@@ -16,6 +16,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "daran_build.h"
 #include "daran_config.h"
 #include "daran_hal.h"
 #include "daran_result.h"
@@ -118,18 +119,23 @@ typedef struct daran_drive {
  * ring, no partial line, no preset). @p hal must stay valid while the instance
  * is used; every member of it must be set.
  * O(sizeof *drive). Returns DARAN_ERR_BAD_ARGUMENT if a pointer or HAL member
- * is NULL, or if the caller was compiled with other size options than the
- * library (see daran_init_sized()); the instance is then unusable. */
-#define daran_init(drive, hal, hal_ctx, write, write_ctx) \
-    daran_init_sized((drive), sizeof(daran_drive_t), (hal), (hal_ctx), (write), (write_ctx))
+ * is NULL, and DARAN_ERR_BUILD_MISMATCH if the caller was compiled with other
+ * options or another property table than the library (see
+ * daran_init_checked()); the instance is then unusable. */
+#define daran_init(drive, hal, hal_ctx, write, write_ctx)                                  \
+    daran_init_checked((drive), DARAN_BUILD_SIGNATURE ^ (uint32_t)sizeof(daran_drive_t),   \
+                       (hal), (hal_ctx), (write), (write_ctx))
 
-/** What daran_init() calls, with the caller's sizeof(daran_drive_t): a
- * program compiled with other DARAN_LINE_MAX / DARAN_RX_RING_SIZE /
- * DARAN_REPLY_MAX than the library would otherwise corrupt memory silently;
- * here it gets DARAN_ERR_BAD_ARGUMENT instead. */
-DARAN_NODISCARD daran_result_t daran_init_sized(daran_drive_t *drive, size_t drive_size,
-                                                const daran_hal_t *hal, void *hal_ctx,
-                                                daran_write_fn write, void *write_ctx);
+/** What daran_init() calls, with the caller's DARAN_BUILD_SIGNATURE
+ * (daran_build.h) mixed with its sizeof(daran_drive_t): a program compiled
+ * with another options header than the library (other DARAN_LINE_MAX, its
+ * own property rows or omissions, other options) would otherwise corrupt
+ * memory or send property ids that mean other properties to the library;
+ * here it gets DARAN_ERR_BUILD_MISMATCH instead, before anything is
+ * touched. */
+DARAN_NODISCARD daran_result_t daran_init_checked(daran_drive_t *drive, uint32_t build_check,
+                                                  const daran_hal_t *hal, void *hal_ctx,
+                                                  daran_write_fn write, void *write_ctx);
 
 /** Register (or, with NULL, remove) the forward hook of a CAN gateway.
  * O(1), cannot fail. */

@@ -3,8 +3,9 @@
  *
  * Every function that can fail returns daran_result_t: DARAN_OK (0) is
  * success; every other value names one error reply of the protocol (its
- * phrase is daran_result_phrase()), except DARAN_ERR_BAD_ARGUMENT, which
- * reports misuse of the API itself and is never sent on the link.
+ * phrase is daran_result_phrase()), except DARAN_ERR_BAD_ARGUMENT and
+ * DARAN_ERR_BUILD_MISMATCH, which report misuse of the API itself and are
+ * never sent on the link.
  * HAL functions return the same type: a HAL that refuses a request returns the
  * protocol error the drive should answer with. */
 #ifndef DARAN_RESULT_H
@@ -42,6 +43,7 @@ typedef enum daran_result {
     DARAN_ERR_MOTOR_FAULT,           /**< "motor fault" */
     DARAN_ERR_MOTOR_IDLE,            /**< "motor idle" */
     DARAN_ERR_BAD_ARGUMENT,          /**< API misuse; never sent on the link */
+    DARAN_ERR_BUILD_MISMATCH,        /**< daran_init(): the program and the library were built with other options; never sent on the link */
     DARAN_RESULT_COUNT               /**< how many results there are; not a result */
 } daran_result_t;
 

@@ -5,12 +5,17 @@
 
 #include "daran_port.h"
 
-daran_result_t daran_init_sized(daran_drive_t *drive, size_t drive_size, const daran_hal_t *hal,
-                                void *hal_ctx, daran_write_fn write, void *write_ctx)
+daran_result_t daran_init_checked(daran_drive_t *drive, uint32_t build_check,
+                                  const daran_hal_t *hal, void *hal_ctx, daran_write_fn write,
+                                  void *write_ctx)
 {
-    if (drive == NULL || drive_size != sizeof *drive || hal == NULL || write == NULL ||
-        hal->get == NULL || hal->set == NULL || hal->move == NULL || hal->action == NULL) {
+    if (drive == NULL || hal == NULL || write == NULL || hal->get == NULL || hal->set == NULL ||
+        hal->move == NULL || hal->action == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
+    }
+    /* the caller's signature and instance size, as daran_init() mixes them */
+    if (build_check != (DARAN_BUILD_SIGNATURE ^ (uint32_t)sizeof *drive)) {
+        return DARAN_ERR_BUILD_MISMATCH;
     }
     unsigned char *raw = (unsigned char *)drive;
     for (size_t i = 0; i < sizeof *drive; i++) {

@@ -21,7 +21,8 @@ static const char phrases[] =
     "estop active\0"
     "motor fault\0"
     "motor idle\0"
-    "bad argument";
+    "bad argument\0"
+    "build mismatch";
 
 const char *daran_nth_text(const char *block, unsigned n)
 {

@@ -112,13 +112,28 @@ static void test_queries_answer_from_the_property_store(void)
 static void test_an_instance_of_another_size_is_refused(void)
 {
     /* What a caller compiled with other DARAN_* size options would pass. */
-    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT,
-                            daran_init_sized(&fixture.drive, sizeof(daran_drive_t) - 4u,
-                                             &minimal_hal, &fixture.axis, write_line,
-                                             &fixture.link));
-    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_init_sized(&fixture.drive, sizeof(daran_drive_t),
-                                                       &minimal_hal, &fixture.axis, write_line,
-                                                       &fixture.link));
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BUILD_MISMATCH,
+                            daran_init_checked(&fixture.drive,
+                                               DARAN_BUILD_SIGNATURE ^ (uint32_t)(sizeof(daran_drive_t) - 4u),
+                                               &minimal_hal, &fixture.axis,
+                                               write_line, &fixture.link));
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK,
+                            daran_init_checked(&fixture.drive,
+                                               DARAN_BUILD_SIGNATURE ^ (uint32_t)sizeof(daran_drive_t),
+                                               &minimal_hal, &fixture.axis,
+                                               write_line, &fixture.link));
+}
+
+static void test_a_program_with_another_property_table_is_refused(void)
+{
+    /* What a caller compiled with another options header (its own rows, an
+     * omission, another option) would pass: the same size, another table. */
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BUILD_MISMATCH,
+                            daran_init_checked(&fixture.drive,
+                                               DARAN_BUILD_SIGNATURE ^ (uint32_t)sizeof(daran_drive_t) ^ 1u,
+                                               &minimal_hal,
+                                               &fixture.axis, write_line, &fixture.link));
+    TEST_ASSERT_EQUAL_STRING("build mismatch", daran_result_phrase(DARAN_ERR_BUILD_MISMATCH));
 }
 
 int main(void)
@@ -130,5 +145,6 @@ int main(void)
     RUN_TEST(test_save_reaches_the_flash_driver);
     RUN_TEST(test_queries_answer_from_the_property_store);
     RUN_TEST(test_an_instance_of_another_size_is_refused);
+    RUN_TEST(test_a_program_with_another_property_table_is_refused);
     return UNITY_END();
 }

@@ -134,7 +134,7 @@ consumer_mismatch_refused() {
     echo "a consumer built with DARAN_LINE_MAX=64 ran against a 128 library"; return 1
   fi
   cat "$out.log"
-  grep -q "daran_init refused the instance: bad argument" "$out.log"
+  grep -q "daran_init refused the instance: build mismatch" "$out.log"
 }
 step "consumer: built with other size options, daran_init() refuses it" \
   consumer_mismatch_refused "$prefix" "$work/consumer-mismatch"
