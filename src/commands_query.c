@@ -81,24 +81,29 @@ static const daran_prop_t error_registers[] = {
 };
 #define ERROR_REGISTER_COUNT (sizeof error_registers / sizeof error_registers[0])
 
+/* The bit of axis0.error that summarises each register after the first
+ * (daran_hal.h); 31 for can.error, which no bit summarises. */
+static const uint8_t summary_bit[ERROR_REGISTER_COUNT - 1u] = {6, 8, 9, 18, 18, 31};
+
 daran_result_t daran_cmd_e(daran_drive_t *drive, const daran_request_t *request)
 {
     /* Every register is read before the first line goes out: a failing read
-     * answers one error line, never half a report; a register the HAL does
-     * not keep (DARAN_ERR_INVALID_PROPERTY) reads 0. A port cannot leave
-     * these rows out of the table (the generator refuses): their paths name
-     * the lines. */
+     * answers one error line, never half a report (D24). axis0.error must
+     * read. Another register whose read fails (a port without that
+     * hardware answers `motor fault` or `invalid property` for it) reads 0
+     * when axis0.error vouches for it, its summary bit clear; with the bit
+     * set the report would hide a fault, so the read's error answers. A
+     * port cannot leave these rows out of the table (the generator
+     * refuses): their paths name the lines. */
     uint32_t values[ERROR_REGISTER_COUNT];
     (void)request;
     for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
         daran_value_t value;
         daran_result_t result = daran_get(drive, error_registers[i], &value);
-        if (result == DARAN_ERR_INVALID_PROPERTY) {
-            value.u32 = 0;
-        } else if (result != DARAN_OK) {
+        if (result != DARAN_OK && (i == 0u || (values[0] >> summary_bit[i - 1u] & 1u) != 0u)) {
             return result;
         }
-        values[i] = value.u32;
+        values[i] = result == DARAN_OK ? value.u32 : 0u;
     }
     for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
         /* the name is the register's path without ".error"; `axis` for

@@ -196,6 +196,7 @@ static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
     }
     if (h->fail_get_nth != 0u && ++h->gets_seen == h->fail_get_nth) {
         h->get_failed = true;
+        h->get_failed_prop = prop;
         return (daran_result_t)h->fail_result;
     }
     *out = h->props[prop];

@@ -52,6 +52,7 @@ typedef struct fuzz_hal {
     bool failed_was_last; /* ... and no mutating call followed it */
     daran_result_t fail_answer; /* the reply the core owes for it (D26) */
     bool get_failed;            /* an injected getter failure happened */
+    daran_prop_t get_failed_prop; /* ... on this property */
 
     uint64_t hash; /* every mutating call and reply, in order */
 

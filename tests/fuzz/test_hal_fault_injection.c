@@ -161,6 +161,19 @@ static void check_session_with_failure(uint32_t nth, int result, bool getter)
             continue;
         }
         seen = true;
+        /* D24: `e` reads a register other than axis0.error whose read fails
+         * as 0 when axis0.error's summary bit for it is clear (the session's
+         * drive has no error bit): a full report, no error line. */
+        if (getter && strcmp(session[i], "e 1") == 0 &&
+            run.hal.get_failed_prop != DARAN_PROP_AXIS_ERROR &&
+            run.hal.get_failed_prop != DARAN_PROP_CAN_NODE_ID) {
+            if (r != DARAN_OK || run.hal.n_replies != 7u) {
+                FAIL_F("N=%u: \"e 1\" with a failed read of register %d answered %d in %u lines, "
+                       "want the 7-line report", nth, (int)run.hal.get_failed_prop, (int)r,
+                       (unsigned)run.hal.n_replies);
+            }
+            continue;
+        }
         bool feed_only = !getter && run.hal.n_move == 1u &&
                          run.hal.last_call == 'a' && run.hal.last_action == DARAN_ACTION_FEED_WATCHDOG &&
                          run.hal.failed_was_last;

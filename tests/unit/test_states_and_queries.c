@@ -467,13 +467,16 @@ static void test_e_lines_are_in_the_vendor_order_with_the_vendor_names(void)
                     "fet_thermistor: 0 *55\nmotor_thermistor: 1 *42\ncan: 4294967295 *91\n");
 }
 
-/* A register that cannot be read makes the whole reply one error line:
- * never half a report (D24). */
+/* A register that cannot be read makes the whole reply one error line when
+ * the report would otherwise hide a fault: axis0.error itself, or a
+ * register whose summary bit in axis0.error is set (D24). */
 static void test_e_with_a_failing_register_read_answers_only_motor_fault(void)
 {
-    for (size_t i = 0; i < 7; i++) {
+    for (size_t i = 0; i < 6; i++) { /* can.error (last) has no summary bit */
         mock_t *m = mock_new();
-        m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_ESTOP;
+        m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_ESTOP | DARAN_FLAG_MOTOR_FAILED |
+                                             DARAN_FLAG_ENCODER_FAILED |
+                                             DARAN_FLAG_CONTROLLER_FAILED | DARAN_FLAG_OVERTEMP;
         mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, (int)e_registers[i]);
         mock_send_line(m, "e 1");
         mock_check(m->n_writes == 1, m, __FILE__, __LINE__, "register %s: one line, got %zu",
@@ -492,6 +495,27 @@ static void test_e_with_a_failing_register_read_answers_only_motor_fault(void)
         /* the next e answers in full */
         mock_send_line(m, "e 1");
         mock_check(m->n_writes == 7, m, __FILE__, __LINE__, "expected 7 lines");
+    }
+}
+
+/* A port whose hardware lacks a register answers `motor fault` (or
+ * `invalid property`) for it: with axis0.error's summary bit for it clear,
+ * `e` reports it as 0 instead of refusing the whole report (D24). */
+static void test_e_reads_a_failing_register_that_axis_error_vouches_for_as_0(void)
+{
+    for (size_t i = 1; i < 7; i++) {
+        mock_t *m = mock_new();
+        m->props[DARAN_PROP_AXIS_ERROR].u32 = DARAN_FLAG_ESTOP;
+        m->props[e_registers[i]].u32 = 5;
+        mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, (int)e_registers[i]);
+        mock_send_line(m, "e 1");
+        mock_check(m->n_writes == 7, m, __FILE__, __LINE__, "register %s: 7 lines, got %zu",
+                   e_names[i], m->n_writes);
+        char want[32];
+        snprintf(want, sizeof want, "\n%s: 0\n", e_names[i]);
+        mock_check(strstr(m->out, want) != NULL, m, __FILE__, __LINE__,
+                   "register %s does not read 0", e_names[i]);
+        ASSERT_NO_EFFECT(m);
     }
 }
 
@@ -628,6 +652,7 @@ int main(void)
                        "test_e_with_%s_answers_seven_register_lines", e_cases[i].why);
     ADD(test_e_lines_are_in_the_vendor_order_with_the_vendor_names);
     ADD(test_e_with_a_failing_register_read_answers_only_motor_fault);
+    ADD(test_e_reads_a_failing_register_that_axis_error_vouches_for_as_0);
     ADD(test_e_reads_a_register_the_port_left_out_as_0);
     ADD(test_h_answers_one_line_per_command_in_table_order);
     ADD(test_h_lines_each_carry_a_checksum_when_requested);
