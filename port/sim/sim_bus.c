@@ -16,11 +16,15 @@ static void node_write(void *ctx, const char *line, size_t len)
     n->out_len += len;
 }
 
-static void node_start(daran_sim_node_t *n)
+static void node_start(daran_sim_bus_t *bus, uint32_t index)
 {
+    daran_sim_node_t *n = &bus->node[index];
     n->out_len = 0u;
     if (daran_init(&n->proto, &daran_sim_hal, &n->sim, node_write, n) != DARAN_OK) {
         n->out_lost++; /* cannot happen: every pointer is set */
+    }
+    if (bus->setup != NULL) {
+        bus->setup(bus->setup_ctx, index, &n->proto);
     }
 }
 
@@ -33,13 +37,25 @@ daran_result_t daran_sim_bus_init(daran_sim_bus_t *bus, uint32_t count, uint32_t
     bus->count = count;
     bus->tick_hz = tick_hz;
     bus->ticks = 0u;
+    bus->setup = NULL;
+    bus->setup_ctx = NULL;
     for (i = 0; i < count; i++) {
         daran_sim_node_t *n = &bus->node[i];
         daran_sim_drive_init(&n->sim, i, tick_hz);
         n->out_lost = 0u;
-        node_start(n);
+        node_start(bus, i);
     }
     return DARAN_OK;
+}
+
+void daran_sim_bus_set_setup(daran_sim_bus_t *bus, daran_sim_setup_fn setup, void *ctx)
+{
+    uint32_t i;
+    bus->setup = setup;
+    bus->setup_ctx = ctx;
+    for (i = 0; setup != NULL && i < bus->count; i++) {
+        setup(ctx, i, &bus->node[i].proto);
+    }
 }
 
 void daran_sim_bus_set_storage(daran_sim_bus_t *bus, uint32_t index,
@@ -105,7 +121,7 @@ void daran_sim_bus_tick(daran_sim_bus_t *bus)
 {
     uint32_t i;
     for (i = 0; i < bus->count; i++) {
-        daran_sim_model_tick(&bus->node[i].sim.model);
+        daran_sim_drive_tick(&bus->node[i].sim);
     }
     bus->ticks++;
     /* after the tick, as a drive's main loop would: reports go out with the
@@ -120,6 +136,6 @@ void daran_sim_bus_power_cycle(daran_sim_bus_t *bus, uint32_t index)
     if (index < bus->count) {
         daran_sim_node_t *n = &bus->node[index];
         daran_sim_drive_power_on(&n->sim);
-        node_start(n);
+        node_start(bus, index);
     }
 }

@@ -30,19 +30,32 @@ typedef struct daran_sim_node {
     uint32_t out_lost;           /* reply bytes that did not fit */
 } daran_sim_node_t;
 
+/* Configures a protocol instance the bus has just started (e.g. gives it
+ * the port's own commands, daran_set_port_commands()): drive @p index
+ * (0-based) of the bus. */
+typedef void (*daran_sim_setup_fn)(void *ctx, uint32_t index, daran_drive_t *proto);
+
 typedef struct daran_sim_bus {
     uint32_t count;
     uint32_t tick_hz;
     uint64_t ticks;
+    daran_sim_setup_fn setup;  /* NULL: instances as daran_init() leaves them */
+    void *setup_ctx;
     daran_sim_node_t node[DARAN_SIM_MAX_DRIVES];
 } daran_sim_bus_t;
 
 /* Receives collected reply bytes of one drive (whole lines). */
 typedef void (*daran_sim_sink_fn)(void *ctx, uint32_t drive_id, const char *bytes, size_t len);
 
-/* @p count drives (1..DARAN_SIM_MAX_DRIVES), ids 1..count, RAM storage.
- * DARAN_ERR_BAD_ARGUMENT for a bad count or tick rate. */
+/* @p count drives (1..DARAN_SIM_MAX_DRIVES), ids 1..count, RAM storage,
+ * no setup function. DARAN_ERR_BAD_ARGUMENT for a bad count or tick rate
+ * (nothing initialised). O(count). */
 daran_result_t daran_sim_bus_init(daran_sim_bus_t *bus, uint32_t count, uint32_t tick_hz);
+
+/* Call @p setup (with @p ctx) on every drive's protocol instance now, and
+ * on each new one a power cycle starts; NULL stops that. A port's own
+ * commands survive `!power-cycle` so. */
+void daran_sim_bus_set_setup(daran_sim_bus_t *bus, daran_sim_setup_fn setup, void *ctx);
 
 /* Give drive @p index its own storage and power it on again. */
 void daran_sim_bus_set_storage(daran_sim_bus_t *bus, uint32_t index,
@@ -56,12 +69,14 @@ void daran_sim_bus_send(daran_sim_bus_t *bus, const char *bytes, size_t len);
  * index order), and clear them. Returns how many drives had replies. */
 uint32_t daran_sim_bus_collect(daran_sim_bus_t *bus, daran_sim_sink_fn sink, void *ctx);
 
-/* One control tick on every drive, then each drive's telemetry (its
- * reports wait with the replies for daran_sim_bus_collect()). */
+/* One control tick on every drive (daran_sim_drive_tick(): the model's and
+ * the extension's), then each drive's telemetry (its reports wait with the
+ * replies for daran_sim_bus_collect()). */
 void daran_sim_bus_tick(daran_sim_bus_t *bus);
 
-/* Power-cycle drive @p index: new protocol instance (no preset, empty ring),
- * drive booted from its non-volatile memory. */
+/* Power-cycle drive @p index: new protocol instance (no preset, empty ring;
+ * the setup function runs on it), drive booted from its non-volatile
+ * memory. */
 void daran_sim_bus_power_cycle(daran_sim_bus_t *bus, uint32_t index);
 
 #ifdef __cplusplus

@@ -1,10 +1,26 @@
 /* The HAL of the simulated drive: maps the core's get/set/move/action calls
- * onto the model and the non-volatile memory. */
+ * onto the model and the non-volatile memory, after the test's layers: an
+ * injected refusal, then the extension. (The functions that arm those are in
+ * sim_faults.c and sim_extension.c; this file needs none of them, so a
+ * firmware plant links model, NVM and drive alone.) */
 #include "sim_drive.h"
 
-static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+#include <stddef.h>
+
+/* Takes one pending refusal of kind @p call: true, with its result in *r. */
+static bool refused(daran_sim_drive_t *d, daran_sim_hal_call_t call, daran_result_t *r)
 {
-    const daran_sim_drive_t *d = ctx;
+    daran_sim_refusal_t *refusal = &d->refuse[call];
+    if (refusal->left == 0u) {
+        return false;
+    }
+    refusal->left--;
+    *r = refusal->result;
+    return true;
+}
+
+static daran_result_t drive_get(const daran_sim_drive_t *d, daran_prop_t prop, daran_value_t *out)
+{
     switch (prop) {
     case DARAN_PROP_FW_VERSION:
         out->u64 = 0u;
@@ -30,23 +46,62 @@ static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
     }
 }
 
+static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+{
+    daran_sim_drive_t *d = ctx;
+    daran_result_t r;
+    if (refused(d, DARAN_SIM_CALL_GET, &r)) {
+        return r;
+    }
+    if (d->ext != NULL && d->ext->get != NULL) {
+        r = d->ext->get(d->ext_ctx, prop, out);
+        if (r != DARAN_SIM_NOT_MINE) {
+            return r;
+        }
+    }
+    return drive_get(d, prop, out);
+}
+
 static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
 {
     daran_sim_drive_t *d = ctx;
+    daran_result_t r;
+    if (refused(d, DARAN_SIM_CALL_SET, &r)) {
+        return r;
+    }
+    if (d->ext != NULL && d->ext->set != NULL) {
+        r = d->ext->set(d->ext_ctx, prop, value);
+        if (r != DARAN_SIM_NOT_MINE) {
+            return r;
+        }
+    }
     return daran_sim_model_set(&d->model, prop, value);
 }
 
 static daran_result_t hal_move(void *ctx, const daran_move_t *move)
 {
     daran_sim_drive_t *d = ctx;
+    daran_result_t r;
+    if (refused(d, DARAN_SIM_CALL_MOVE, &r)) {
+        return r;
+    }
     return daran_sim_model_move(&d->model, move);
 }
 
 static daran_result_t hal_action(void *ctx, daran_action_t action)
 {
     daran_sim_drive_t *d = ctx;
+    daran_result_t r;
+    if (refused(d, DARAN_SIM_CALL_ACTION, &r)) {
+        return r;
+    }
     switch (action) {
     case DARAN_ACTION_SAVE_CONFIG:
+        if (d->failing_saves > 0u) {
+            /* the flash refused the write: nothing stored changes */
+            d->failing_saves--;
+            return DARAN_ERR_MOTOR_FAULT;
+        }
         return daran_sim_nvm_save(&d->storage, &d->model) ? DARAN_OK : DARAN_ERR_MOTOR_FAULT;
     case DARAN_ACTION_ERASE_CONFIG:
         return daran_sim_nvm_erase(&d->storage) ? DARAN_OK : DARAN_ERR_MOTOR_FAULT;
@@ -74,6 +129,14 @@ const daran_hal_t daran_sim_hal = {hal_get, hal_set, hal_move, hal_action};
 
 void daran_sim_drive_init(daran_sim_drive_t *d, uint32_t index, uint32_t tick_hz)
 {
+    uint32_t k;
+    d->ext = NULL;
+    d->ext_ctx = NULL;
+    for (k = 0; k < (uint32_t)DARAN_SIM_CALL_COUNT; k++) {
+        d->refuse[k].left = 0u;
+        d->refuse[k].result = DARAN_OK;
+    }
+    d->failing_saves = 0u;
     daran_sim_model_init(&d->model, tick_hz);
     daran_sim_ram_storage_init(&d->ram, &d->storage);
     d->default_id = index + 1u;
@@ -96,6 +159,14 @@ void daran_sim_drive_power_on(daran_sim_drive_t *d)
     if (d->nvm_status == DARAN_SIM_NVM_DAMAGED) {
         /* a warning: the drive runs on defaults and moves */
         d->model.config_warnings |= DARAN_WARNING_NVM_CORRUPT;
+    }
+}
+
+void daran_sim_drive_tick(daran_sim_drive_t *d)
+{
+    daran_sim_model_tick(&d->model);
+    if (d->ext != NULL && d->ext->tick != NULL) {
+        d->ext->tick(d->ext_ctx, &d->model);
     }
 }
 

@@ -24,7 +24,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "sim_bus.h"
+#include "daran_sim.h"
 #include "sim_file_storage.h"
 
 #define MAX_ADVANCE_S 86400.0
@@ -620,20 +620,6 @@ static void record_line(const char *bytes, size_t kept, uint64_t total)
 
 /* ---- directives ---- */
 
-/* `!fault ID KIND`: the model's injections, and the NVM's. */
-static const struct {
-    const char *name;
-    daran_sim_fault_t kind;
-    bool nvm;
-} faults[] = {
-    {"overtemp", DARAN_SIM_FAULT_OVERTEMP, false},
-    {"undervoltage", DARAN_SIM_FAULT_UNDERVOLTAGE, false},
-    {"stall", DARAN_SIM_FAULT_STALL, false},
-    {"overspeed", DARAN_SIM_FAULT_OVERSPEED, false},
-    {"nvm-corrupt", DARAN_SIM_FAULT_OVERTEMP, true},
-};
-#define FAULT_NAMES "overtemp, undervoltage, stall, overspeed, nvm-corrupt"
-
 /* Indexes of the drives a directive's ID names; 0 when none. */
 static uint32_t select_drives(const char *text, uint32_t out[DARAN_SIM_MAX_DRIVES])
 {
@@ -704,26 +690,20 @@ static void directive(char *line)
             daran_sim_bus_power_cycle(&app.bus, sel[i]);
         }
     } else if (strcmp(argv[0], "fault") == 0) {
-        size_t k;
+        /* the library's fault injection, as a test would call it */
+        daran_sim_fault_t fault;
         if (argc != 3) {
-            complain("usage: !fault ID %s", FAULT_NAMES);
+            complain("usage: !fault ID %s", DARAN_SIM_FAULT_NAMES);
             return;
         }
-        for (k = 0; k < sizeof faults / sizeof faults[0]; k++) {
-            if (strcmp(argv[2], faults[k].name) == 0) {
-                break;
-            }
-        }
-        if (k == sizeof faults / sizeof faults[0]) {
-            complain("unknown fault '%s' (%s)", argv[2], FAULT_NAMES);
+        if (!daran_sim_fault_from_name(argv[2], &fault)) {
+            complain("unknown fault '%s' (%s)", argv[2], DARAN_SIM_FAULT_NAMES);
             return;
         }
         n = select_drives(argv[1], sel);
         for (i = 0; i < n; i++) {
             daran_sim_drive_t *d = &app.bus.node[sel[i]].sim;
-            if (!faults[k].nvm) {
-                daran_sim_model_fault(&d->model, faults[k].kind);
-            } else if (!daran_sim_drive_corrupt_nvm(d)) {
+            if (daran_sim_drive_inject_fault(d, fault) != DARAN_OK) {
                 complain("drive %u: its storage failed", daran_sim_drive_id(d));
             }
         }

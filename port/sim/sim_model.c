@@ -196,20 +196,47 @@ static float from_view(view_kind_t kind, float g, float x)
     }
 }
 
+/* The port's own rows (DARAN_PORT_PROPERTY_LIST of its options header)
+ * follow the vendor's: the model keeps a plain store for them. */
+#ifdef DARAN_PORT_PROPERTY_LIST
+#define DARAN_SIM_PORT_ROWS_(X) DARAN_PORT_PROPERTY_LIST(X)
+#else
+#define DARAN_SIM_PORT_ROWS_(X)
+#endif
+
+enum {
+#define DARAN_SIM_COUNT_(id, path, scope, type, access, range, unit) +1
+    VENDOR_PROP_COUNT = 0 DARAN_PROPERTY_LIST(DARAN_SIM_COUNT_)
+#undef DARAN_SIM_COUNT_
+};
+
 #define DARAN_SIM_ACCESS_RW 1u
 #define DARAN_SIM_ACCESS_RO 0u
 static const uint8_t prop_is_rw[DARAN_PROP_COUNT] = {
 #define DARAN_SIM_RW_(id, path, scope, type, access, range, unit) \
     (uint8_t)DARAN_SIM_ACCESS_##access,
     DARAN_PROPERTY_LIST(DARAN_SIM_RW_)
+    DARAN_SIM_PORT_ROWS_(DARAN_SIM_RW_)
 #undef DARAN_SIM_RW_
 };
 
 static const daran_prop_type_t prop_type[DARAN_PROP_COUNT] = {
 #define DARAN_SIM_TYPE_(id, path, scope, type, access, range, unit) DARAN_TYPE_##type,
     DARAN_PROPERTY_LIST(DARAN_SIM_TYPE_)
+    DARAN_SIM_PORT_ROWS_(DARAN_SIM_TYPE_)
 #undef DARAN_SIM_TYPE_
 };
+
+daran_prop_type_t daran_sim_prop_type(daran_prop_t prop)
+{
+    return (unsigned)prop < (unsigned)DARAN_PROP_COUNT ? prop_type[prop] : DARAN_TYPE_U32;
+}
+
+bool daran_sim_is_port_prop(daran_prop_t prop)
+{
+    return (unsigned)prop >= (unsigned)VENDOR_PROP_COUNT &&
+           (unsigned)prop < (unsigned)DARAN_PROP_COUNT;
+}
 
 bool daran_sim_is_config_prop(daran_prop_t prop)
 {
@@ -390,8 +417,15 @@ static float limit_pos(const daran_sim_model_t *m, float pos)
 void daran_sim_model_default_config(daran_sim_model_t *m)
 {
     size_t i;
+    int p;
     for (i = 0; i < sizeof config_defaults / sizeof config_defaults[0]; i++) {
         m->cfg[config_defaults[i].prop] = config_defaults[i].value;
+    }
+    /* a port's settings default to 0; its readings are state and stay */
+    for (p = (int)VENDOR_PROP_COUNT; p < (int)DARAN_PROP_COUNT; p++) {
+        if (daran_sim_is_config_prop((daran_prop_t)p)) {
+            m->cfg[p].u64 = 0u;
+        }
     }
     m->zero_offset_deg = 0.0f;
 }
@@ -1357,7 +1391,7 @@ static daran_result_t get_direct(const daran_sim_model_t *m, daran_prop_t prop,
     case DARAN_PROP_SERIAL_NUMBER_L:
         return DARAN_ERR_INVALID_PROPERTY; /* the drive (sim_drive.c) knows these */
     default:
-        if (!daran_sim_is_config_prop(prop)) {
+        if (!daran_sim_is_config_prop(prop) && !daran_sim_is_port_prop(prop)) {
             return DARAN_ERR_INVALID_PROPERTY;
         }
         v = m->cfg[prop];

@@ -60,18 +60,24 @@ typedef enum daran_sim_mode {
     DARAN_SIM_MODE_IMPEDANCE      /* d: 3, 9 */
 } daran_sim_mode_t;
 
-/* Fault injections (the `!fault` directive). */
+/* Fault injections (the `!fault` directive of daran-sim,
+ * daran_sim_drive_inject_fault() of sim_faults.h). */
 typedef enum daran_sim_fault {
     DARAN_SIM_FAULT_OVERTEMP,     /* temperatures jump above their upper limits */
     DARAN_SIM_FAULT_UNDERVOLTAGE, /* the bus sags below the trip level for a while */
     DARAN_SIM_FAULT_STALL,        /* the stall limiter trips at the next tick */
-    DARAN_SIM_FAULT_OVERSPEED     /* the shaft is thrown beyond the over-speed limit */
+    DARAN_SIM_FAULT_OVERSPEED,    /* the shaft is thrown beyond the over-speed limit */
+    DARAN_SIM_FAULT_NVM_CORRUPT   /* the stored config is damaged (the drive's NVM:
+                                     daran_sim_model_fault() ignores it) */
 } daran_sim_fault_t;
 
 typedef struct daran_sim_model {
     daran_sim_params_t par;
     /* Configuration, by property id: the rows daran_sim_is_config_prop()
-     * names. Other rows are unused (runtime state lives below). */
+     * names. A port's own rows (daran_sim_is_port_prop()) are a plain
+     * store here: its settings (read-write rows) are configuration, its
+     * readings (read-only rows) hold what a test put there (0 at first).
+     * Other rows are unused (runtime state lives below). */
     daran_value_t cfg[DARAN_PROP_COUNT];
     float zero_offset_deg;    /* shaft angle that is position 0 (persisted) */
 
@@ -166,11 +172,24 @@ void daran_sim_model_tick(daran_sim_model_t *m);
 
 /* True for properties that are configuration (persisted by `ss`): stored
  * read-write values, not the rotor-side views of them, setpoints, modes,
- * states or error registers. */
+ * states or error registers. A port's read-write rows are configuration. */
 bool daran_sim_is_config_prop(daran_prop_t prop);
 
-/* Read any property except fw_version, hw_version and the serial numbers
- * (the drive, sim_drive.c, knows those): DARAN_ERR_INVALID_PROPERTY. */
+/* True for a port's own rows: ids from the end of the vendor's list
+ * (DARAN_PROPERTY_LIST) to DARAN_PROP_COUNT, i.e. the rows of
+ * DARAN_PORT_PROPERTY_LIST in the build's options header. The model keeps
+ * them in cfg[]: a read-write row is stored by a write, read back, saved
+ * by `ss` and 0 after `se` and a reboot; a read-only row reads what
+ * daran_sim_drive_set_port_value() put there (0 at first). */
+bool daran_sim_is_port_prop(daran_prop_t prop);
+
+/* The type of property @p prop, as its row says (a port's rows too);
+ * DARAN_TYPE_U32 for an id outside the table. */
+daran_prop_type_t daran_sim_prop_type(daran_prop_t prop);
+
+/* Read any property (a port's own rows from the plain store) except
+ * fw_version, hw_version and the serial numbers (the drive, sim_drive.c,
+ * knows those): DARAN_ERR_INVALID_PROPERTY. */
 daran_result_t daran_sim_model_get(const daran_sim_model_t *m, daran_prop_t prop,
                                    daran_value_t *out);
 /* Write a read-write property. A value that is not finite, or one whose
@@ -178,6 +197,12 @@ daran_result_t daran_sim_model_get(const daran_sim_model_t *m, daran_prop_t prop
  * DARAN_ERR_OUT_OF_RANGE / DARAN_ERR_INVALID_VALUE, nothing changed. */
 daran_result_t daran_sim_model_set(daran_sim_model_t *m, daran_prop_t prop,
                                    daran_value_t value);
+/* Start a validated motion command (daran_hal_t.move): the mode, targets
+ * and the settings the move carries (daran_move_t). DARAN_OK; when the
+ * drive is not in closed loop DARAN_ERR_ESTOP_ACTIVE (after `st`),
+ * DARAN_ERR_MOTOR_FAULT (an error register is set) or DARAN_ERR_MOTOR_IDLE;
+ * DARAN_ERR_INVALID_MODE for a kind outside the enum. Nothing changed on
+ * an error. */
 daran_result_t daran_sim_model_move(daran_sim_model_t *m, const daran_move_t *move);
 
 /* Go idle and raise @p flags in axis0.error (0: plain idle). */
@@ -189,10 +214,16 @@ void daran_sim_model_set_zero(daran_sim_model_t *m);
 /* Enter closed loop holding the current position; refuses while an error
  * register (other than can.error) is not 0. */
 daran_result_t daran_sim_model_closed_loop(daran_sim_model_t *m);
+/* `u` and every accepted motion command: the watchdog's time starts over. */
 void daran_sim_model_feed_watchdog(daran_sim_model_t *m);
+/* Inject one of the model's faults (see daran_sim_fault_t); the effect
+ * shows at the next tick. DARAN_SIM_FAULT_NVM_CORRUPT is the drive's
+ * (daran_sim_drive_inject_fault()): nothing happens here. */
 void daran_sim_model_fault(daran_sim_model_t *m, daran_sim_fault_t fault);
 
-/* Derived values, in protocol units (output shaft). */
+/* Derived values, in protocol units (output shaft): the position
+ * (output_shaft.pos_estimate), the torque and velocity limits in force,
+ * and the inertia the shaft presents (rotor and load). */
 float daran_sim_model_pos_deg(const daran_sim_model_t *m);
 float daran_sim_model_torque_limit(const daran_sim_model_t *m);
 float daran_sim_model_vel_limit_rpm(const daran_sim_model_t *m);

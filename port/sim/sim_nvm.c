@@ -7,7 +7,8 @@
  *   8  sequence u32, higher (mod 2^32) is newer
  *  12  crc      CRC-32 of bytes 4..11 and the payload
  *  16  payload  every configuration property (daran_sim_is_config_prop:
- *               its 32 bits, whatever its type, in property order), then
+ *               its 32 bits, whatever its type, in property order; a
+ *               port's settings after the vendor's, as many as fit), then
  *               the zero offset
  * A save first clears the target slot's magic, then writes header and
  * payload, then the magic: until that last byte lands the slot is not
@@ -23,6 +24,21 @@
 
 #define MAGIC 0x4D495344u /* every byte non-zero and not 0xFF */
 #define HEADER_SIZE 16u
+/* Room for configuration rows in a slot, after the header and before the
+ * zero offset. */
+#define ROWS_MAX_BYTES (DARAN_SIM_NVM_SLOT_SIZE - HEADER_SIZE - 4u)
+
+/* Does row @p p go into the image? Rows are taken in property order while
+ * they fit (*used counts their bytes so far): the vendor's always do, a
+ * port with more settings than fit keeps its last ones in RAM only. */
+static bool in_image(int p, uint32_t *used)
+{
+    if (!daran_sim_is_config_prop((daran_prop_t)p) || *used + 4u > ROWS_MAX_BYTES) {
+        return false;
+    }
+    *used += 4u;
+    return true;
+}
 
 static bool ram_read(void *ctx, uint32_t offset, uint8_t *buf, uint32_t len)
 {
@@ -109,14 +125,12 @@ static float bits_f32(uint32_t u)
 
 static uint32_t payload_size(void)
 {
-    uint32_t n = 4u; /* zero offset */
+    uint32_t used = 0u;
     int p;
     for (p = 0; p < (int)DARAN_PROP_COUNT; p++) {
-        if (daran_sim_is_config_prop((daran_prop_t)p)) {
-            n += 4u;
-        }
+        (void)in_image(p, &used);
     }
-    return n;
+    return used + 4u; /* and the zero offset */
 }
 
 uint32_t daran_sim_nvm_save_size(void)
@@ -162,7 +176,9 @@ static slot_state_t read_slot(const daran_sim_storage_t *st, uint32_t index,
  * whose HAL only notes what reached set(): the same parser, the same range
  * rules (-0 counting as 0, the telemetry field set that must fit a report),
  * in the core as built. What the model refuses on top (a zero gear ratio,
- * non-finite floats) is daran_sim_model_config_ok(). */
+ * non-finite floats) is daran_sim_model_config_ok(). A port's own settings
+ * are not probed: they default to 0 whatever their range says, and their
+ * meaning is the port's (only non-finite floats are refused). */
 
 #define PROBE_PATH_MAX 100u
 
@@ -296,11 +312,12 @@ static bool unpack(const uint8_t *payload, daran_sim_model_t *m)
 {
     daran_value_t cfg[DARAN_PROP_COUNT];
     uint32_t off = 0u;
+    uint32_t used = 0u;
     int p;
     float zero;
     memcpy(cfg, m->cfg, sizeof cfg);
     for (p = 0; p < (int)DARAN_PROP_COUNT; p++) {
-        if (!daran_sim_is_config_prop((daran_prop_t)p)) {
+        if (!in_image(p, &used)) {
             continue;
         }
         /* f32, u32, s32 and bool all travel as their 32 bits */
@@ -375,6 +392,7 @@ bool daran_sim_nvm_save(const daran_sim_storage_t *st, const daran_sim_model_t *
     uint32_t base = target * DARAN_SIM_NVM_SLOT_SIZE;
     uint32_t len = payload_size();
     uint32_t off = HEADER_SIZE;
+    uint32_t used = 0u;
     int p;
 
     memset(slot, 0, sizeof slot);
@@ -384,7 +402,7 @@ bool daran_sim_nvm_save(const daran_sim_storage_t *st, const daran_sim_model_t *
     slot[7] = (uint8_t)(len >> 8);
     put_u32(slot + 8, newest >= 0 ? seq + 1u : 1u);
     for (p = 0; p < (int)DARAN_PROP_COUNT; p++) {
-        if (daran_sim_is_config_prop((daran_prop_t)p)) {
+        if (in_image(p, &used)) {
             put_u32(slot + off, m->cfg[p].u32);
             off += 4u;
         }
