@@ -49,7 +49,16 @@ int main(void)
     static char padded[DARAN_LINE_MAX + 1];
     const char *read_vbus = "r vbus_voltage 1";
 
-    /* daran_init() also compares this file's sizeof(daran_drive_t) with the
+#ifdef CONSUMER_EXPECT_LINE_MAX
+    /* the options header the project named must have reached both sides */
+    if (DARAN_LINE_MAX != CONSUMER_EXPECT_LINE_MAX) {
+        printf("FAIL: DARAN_LINE_MAX is %d, the project's options header says %d\n",
+               (int)DARAN_LINE_MAX, (int)CONSUMER_EXPECT_LINE_MAX);
+        return 1;
+    }
+#endif
+    /* daran_init() also compares this file's build signature and
+     * sizeof(daran_drive_t) with the
      * library's: built with other size options, it must refuse. */
     daran_stub_init(&stub, 1);
     stub.values[DARAN_PROP_VBUS_VOLTAGE].f32 = 24.5f;

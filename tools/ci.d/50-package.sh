@@ -139,6 +139,43 @@ consumer_mismatch_refused() {
 step "consumer: built with other size options, daran_init() refuses it" \
   consumer_mismatch_refused "$prefix" "$work/consumer-mismatch"
 
+# docs/porting.md 5.1: a project names its options header with a plain set()
+# before add_subdirectory(); under its CMake 3.20 policies (CMP0126 OLD) the
+# header must still reach the library (it used to be dropped silently).
+step "consumer: set(DARAN_CONFIG_HEADER ...) before add_subdirectory reaches the library (CMP0126 OLD)" \
+  consumer_cmake tests/consumer/add_subdirectory "$work/consumer-subdir-c" -DDARAN_SOURCE_DIR="$repo" \
+  -DCONSUMER_OPTIONS_HEADER="$repo/tests/config/config_c.h" -DCONSUMER_EXPECT_LINE_MAX=256
+
+# Same size, another property table: a program compiled with a header that
+# leaves a row out must be refused by the library built without it.
+consumer_table_mismatch_refused() {
+  local prefix=$1 out=$2
+  export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+  printf '#define DARAN_OMIT_PROPERTIES(X) X(ENCODER_POS_ABS)\n' >"$work/omits_one_row.h"
+  # shellcheck disable=SC2046
+  cc -std=c99 -Wall -Wextra -Werror -DDARAN_CONFIG_HEADER="$work/omits_one_row.h" -Itests/support \
+    -o "$out" tests/consumer/consumer.c tests/support/stub_hal.c \
+    $(pkg-config --cflags --libs daran_ascii) || return 1
+  if "$out" >"$out.log" 2>&1; then
+    echo "a consumer built with another property table ran against the vendor-table library"; return 1
+  fi
+  cat "$out.log"
+  grep -q "daran_init refused the instance: build mismatch" "$out.log"
+}
+step "consumer: built with another property table (same size), daran_init() refuses it" \
+  consumer_table_mismatch_refused "$prefix" "$work/consumer-table-mismatch"
+
+# The library's own suites with an adopter's options header: the suites that
+# assume the vendor's table step aside, the rest pass (tests/CMakeLists.txt).
+adopter_header_suites() {
+  cmake -S "$repo" -B "$work/adopter-header" -DCMAKE_BUILD_TYPE=Release -DDARAN_BUILD_BENCH=OFF \
+    -DDARAN_BUILD_DEMO=OFF -DDARAN_CONFIG_HEADER="$repo/examples/port-brake/brake_options.h" &&
+    cmake --build "$work/adopter-header" "${jobs[@]}" &&
+    ctest --test-dir "$work/adopter-header" --output-on-failure --no-tests=error -j 2
+}
+step "release build with examples/port-brake/brake_options.h: every suite it registers passes" \
+  adopter_header_suites
+
 # The options header must travel with the installed package: consumers check
 # that a 256-byte line (config_c.h) is accepted by the library they link.
 prefix_c="$work/prefix-c"
