@@ -58,8 +58,10 @@ const char *daran_sim_fault_name(daran_sim_fault_t fault)
 daran_result_t daran_sim_drive_refuse_calls(daran_sim_drive_t *d, daran_sim_hal_call_t call,
                                             uint32_t count, daran_result_t result)
 {
+    /* the results from DARAN_ERR_BAD_ARGUMENT on report API misuse and are
+     * never sent on the link: no HAL answers them */
     if ((unsigned)call >= (unsigned)DARAN_SIM_CALL_COUNT || result == DARAN_OK ||
-        result == DARAN_ERR_BAD_ARGUMENT || (unsigned)result >= (unsigned)DARAN_RESULT_COUNT) {
+        (unsigned)result >= (unsigned)DARAN_ERR_BAD_ARGUMENT) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
     d->refuse[call].left = count;

@@ -58,8 +58,8 @@ const char *daran_sim_fault_name(daran_sim_fault_t fault);
  * (the drive's id or state) makes that line fail too. @p count 0 cancels a
  * pending refusal. Replaces what was pending for that kind.
  * DARAN_ERR_BAD_ARGUMENT (nothing armed) when @p call is not a kind or
- * @p result is not a protocol error (DARAN_OK, DARAN_ERR_BAD_ARGUMENT or
- * outside the enum). */
+ * @p result is not a protocol error (DARAN_OK, DARAN_ERR_BAD_ARGUMENT and
+ * the results after it, which are never sent on the link). */
 DARAN_NODISCARD daran_result_t daran_sim_drive_refuse_calls(daran_sim_drive_t *d,
                                                             daran_sim_hal_call_t call,
                                                             uint32_t count,

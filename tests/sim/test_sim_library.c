@@ -302,6 +302,9 @@ static void test_a_refusal_needs_a_kind_and_a_protocol_error(void)
                           daran_sim_drive_refuse_calls(&sim, DARAN_SIM_CALL_SET, 1u,
                                                        DARAN_ERR_BAD_ARGUMENT));
     TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT,
+                          daran_sim_drive_refuse_calls(&sim, DARAN_SIM_CALL_SET, 1u,
+                                                       DARAN_RESULT_COUNT));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT,
                           daran_sim_drive_refuse_calls(&sim, DARAN_SIM_CALL_COUNT, 1u,
                                                        DARAN_ERR_MOTOR_FAULT));
     TEST_ASSERT_EQUAL_UINT32(0u, daran_sim_drive_refusals_left(&sim, DARAN_SIM_CALL_SET));
