@@ -3,13 +3,37 @@
 
 #include <string.h>
 
-void minimal_drive_init(minimal_drive_t *drive)
+/* What `ss` keeps: the settings, not the state, the setpoints or the error
+ * registers (a reboot starts in closed loop with no flag). */
+static bool saved_setting(daran_prop_t prop)
 {
-    memset(drive, 0, sizeof *drive);
-    for (size_t i = 0; i < MINIMAL_MOVE_WORDS; i++) {
-        atomic_init(&drive->move_words[i], 0u);
+    switch (prop) {
+    case DARAN_PROP_CURRENT_STATE:
+    case DARAN_PROP_REQUESTED_STATE:
+    case DARAN_PROP_AXIS_ERROR:
+    case DARAN_PROP_MOTOR_ERROR:
+    case DARAN_PROP_ENCODER_ERROR:
+    case DARAN_PROP_CONTROLLER_ERROR:
+    case DARAN_PROP_FET_THERMISTOR_ERROR:
+    case DARAN_PROP_MOTOR_THERMISTOR_ERROR:
+    case DARAN_PROP_CAN_ERROR:
+    case DARAN_PROP_CONFIG_WARNINGS:
+    case DARAN_PROP_INPUT_POS:
+    case DARAN_PROP_INPUT_VEL:
+    case DARAN_PROP_INPUT_TORQUE:
+    case DARAN_PROP_POS_SETPOINT:
+    case DARAN_PROP_VEL_SETPOINT:
+    case DARAN_PROP_TORQUE_SETPOINT:
+        return false;
+    default:
+        return true;
     }
-    atomic_init(&drive->move_seq, 0u);
+}
+
+/* Power-up: the defaults, then the saved settings over them. */
+static void boot(minimal_drive_t *drive)
+{
+    memset(drive->props, 0, sizeof drive->props);
     drive->props[DARAN_PROP_CAN_NODE_ID].u32 = 1;
     drive->props[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
     drive->props[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
@@ -20,6 +44,23 @@ void minimal_drive_init(minimal_drive_t *drive)
     drive->props[DARAN_PROP_TORQUE_CONSTANT].f32 = 0.1f;
     drive->props[DARAN_PROP_FW_VERSION].u32 = 100;
     drive->props[DARAN_PROP_HW_VERSION].u32 = 1;
+    if (drive->has_saved) {
+        for (size_t i = 0; i < DARAN_PROP_COUNT; i++) {
+            if (saved_setting((daran_prop_t)i)) {
+                drive->props[i] = drive->saved[i];
+            }
+        }
+    }
+}
+
+void minimal_drive_init(minimal_drive_t *drive)
+{
+    memset(drive, 0, sizeof *drive);
+    for (size_t i = 0; i < MINIMAL_MOVE_WORDS; i++) {
+        atomic_init(&drive->move_words[i], 0u);
+    }
+    atomic_init(&drive->move_seq, 0u);
+    boot(drive);
 }
 
 bool minimal_drive_take_move(minimal_drive_t *drive, daran_move_t *move)
@@ -124,7 +165,15 @@ static daran_result_t action(void *ctx, daran_action_t which)
     daran_value_t *p = drive->props;
     switch (which) {
     case DARAN_ACTION_SAVE_CONFIG:
+        memcpy(drive->saved, drive->props, sizeof drive->saved);
+        drive->has_saved = true;
         drive->saved_config_writes++;
+        return DARAN_OK;
+    case DARAN_ACTION_ERASE_CONFIG:
+        drive->has_saved = false;
+        return DARAN_OK;
+    case DARAN_ACTION_REBOOT:
+        boot(drive);
         return DARAN_OK;
     case DARAN_ACTION_ESTOP:
         p[DARAN_PROP_AXIS_ERROR].u32 |= DARAN_FLAG_ESTOP;
@@ -138,8 +187,6 @@ static daran_result_t action(void *ctx, daran_action_t which)
         p[DARAN_PROP_POS_SETPOINT].f32 -= p[DARAN_PROP_POS_ESTIMATE].f32;
         p[DARAN_PROP_POS_ESTIMATE].f32 = 0.0f;
         return DARAN_OK;
-    case DARAN_ACTION_ERASE_CONFIG:
-    case DARAN_ACTION_REBOOT:
     case DARAN_ACTION_FEED_WATCHDOG:
         return DARAN_OK;
     default:

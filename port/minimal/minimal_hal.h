@@ -27,10 +27,14 @@ typedef struct minimal_drive {
     _Atomic uint32_t move_words[MINIMAL_MOVE_WORDS];
     _Atomic uint32_t move_seq;
     uint32_t taken_seq;                    /* the control loop's: the last move it took */
-    uint32_t saved_config_writes;          /* stands in for the flash driver */
+    /* Stands in for the flash driver: `ss` copies the settings here, `se`
+     * forgets them, `sr` boots from them (or from the defaults). */
+    daran_value_t saved[DARAN_PROP_COUNT];
+    bool has_saved;
+    uint32_t saved_config_writes;
 } minimal_drive_t;
 
-/* Power-up defaults: id 1, closed loop, no flags. */
+/* Factory state: defaults, id 1, closed loop, no flags, nothing saved. */
 void minimal_drive_init(minimal_drive_t *drive);
 
 /* The control loop's side: take the newest move, if there is one it has not
