@@ -69,7 +69,7 @@ configure_package_config_file(
   "${CMAKE_CURRENT_LIST_DIR}/daran_asciiConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/daran_asciiConfig.cmake"
   INSTALL_DESTINATION "${DARAN_INSTALL_CMAKEDIR}"
-  PATH_VARS DARAN_INSTALL_DATADIR CMAKE_INSTALL_INCLUDEDIR)
+  PATH_VARS DARAN_INSTALL_DATADIR CMAKE_INSTALL_INCLUDEDIR CMAKE_INSTALL_BINDIR)
 # 0.x.y: SameMajorVersion accepts any 0.* for a request of 0.*; the version
 # file still refuses a library built for another pointer size (host vs MCU).
 write_basic_package_version_file(
@@ -96,6 +96,17 @@ foreach(_module IN ITEMS DaranAddLibrary DaranSim DaranTestSupport DaranConforma
   endif()
 endforeach()
 install(FILES ${_daran_modules} DESTINATION "${DARAN_INSTALL_CMAKEDIR}")
+
+# The line recorder and the replay tool (docs/recording.md): daran-record sits
+# between a client and a real drive, daran-replay plays a recording into
+# daran-sim, a port program or a serial device and compares the replies.
+install(PROGRAMS "${PROJECT_SOURCE_DIR}/tools/daran-record" DESTINATION "${CMAKE_INSTALL_BINDIR}")
+install(PROGRAMS "${PROJECT_SOURCE_DIR}/tools/replay" DESTINATION "${CMAKE_INSTALL_BINDIR}"
+        RENAME daran-replay)
+# Recorded sessions of the vendor's clients: replay input and fuzz seeds.
+file(GLOB _daran_recordings "${PROJECT_SOURCE_DIR}/examples/recordings/*.txt")
+install(FILES ${_daran_recordings} "${PROJECT_SOURCE_DIR}/tests/record/vendor-session.rec"
+        DESTINATION "${DARAN_INSTALL_DATADIR}/recordings")
 
 # pkg-config: the prefix is found from the .pc file's own place, so the tree
 # can be installed with --prefix or moved after installation.
