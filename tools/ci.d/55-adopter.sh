@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# CI step: a drive maker's project out of the tree (examples/adopter, the
+# ACME X1) built the way docs/testing-your-drive.md says, from what the
+# package installs and from the source tree:
+#   1. the `library` preset (no tests, no Unity) installed to a temporary prefix;
+#   2. examples/adopter from that prefix (find_package): its core for its own
+#      options header, the conformance suite, the fuzz replay, the recorded
+#      session replayed into daran-sim and into its own port, its own test
+#      over the simulated drive (all CTest);
+#   3. the same with clang-14: the libFuzzer harness fuzzes 20 s;
+#   4. examples/adopter again through add_subdirectory of the source tree.
+# Prints the time each step took: the time a new port needs from an
+# installed package to a green conformance run is step 2's configure+build+
+# conformance. Exits non-zero on the first failure, with that step's log.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+repo=$(pwd)
+start=$SECONDS
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/daran-adopter.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+export CMAKE_GENERATOR=Ninja
+jobs=(-j 2)
+summary=()
+
+step() {
+  local name=$1
+  shift
+  local t0=$SECONDS
+  if "$@" >"$work/step.log" 2>&1; then
+    summary+=("PASS  $name ($((SECONDS - t0)) s)")
+  else
+    echo "55-adopter: FAIL $name; its output:"
+    sed 's/^/    /' "$work/step.log"
+    printf '%s\n' "${summary[@]}" "FAIL  $name"
+    exit 1
+  fi
+}
+
+prefix="$work/prefix"
+install_package() {
+  cmake --preset library -B "$work/library" &&
+    cmake --build "$work/library" "${jobs[@]}" &&
+    cmake --install "$work/library" --prefix "$prefix"
+}
+step "install: the library preset (core, simulated drive, test kit, programs) to a prefix" install_package
+
+adopter_from_prefix() {
+  cmake -S examples/adopter -B "$work/adopter" -DCMAKE_BUILD_TYPE=Debug \
+    -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_C_COMPILER=gcc &&
+    cmake --build "$work/adopter" "${jobs[@]}" &&
+    ctest --test-dir "$work/adopter" --output-on-failure --no-tests=error -R acme_conformance
+}
+step "adopter from the prefix: configure, build, a green conformance run" adopter_from_prefix
+step "adopter from the prefix: every test (fuzz replay, recorded session, own test over the sim)" \
+  ctest --test-dir "$work/adopter" --output-on-failure --no-tests=error
+
+adopter_fuzz() {
+  cmake -S examples/adopter -B "$work/adopter-clang" -DCMAKE_BUILD_TYPE=Debug \
+    -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_C_COMPILER=clang-14 &&
+    cmake --build "$work/adopter-clang" "${jobs[@]}" &&
+    cmake --build "$work/adopter-clang" --target acme_fuzz_run
+}
+step "adopter with clang-14: the libFuzzer harness fuzzes 20 s" adopter_fuzz
+
+adopter_subdirectory() {
+  cmake -S examples/adopter -B "$work/adopter-subdir" -DCMAKE_BUILD_TYPE=Debug \
+    -DACME_DARAN_SOURCE_DIR="$repo" -DCMAKE_C_COMPILER=gcc &&
+    cmake --build "$work/adopter-subdir" "${jobs[@]}" &&
+    ctest --test-dir "$work/adopter-subdir" --output-on-failure --no-tests=error
+}
+step "adopter through add_subdirectory of the source tree: every test" adopter_subdirectory
+
+printf '%s\n' "${summary[@]}"
+echo "55-adopter: ${#summary[@]} steps passed in $((SECONDS - start)) s"
