@@ -4,7 +4,8 @@
  * an inner HAL (a shim around the HAL under test). It also captures the
  * replies the core writes, and can make the Nth call of chosen kinds fail.
  *
- * Plain C (host or target): no heap; stdio only in the describe functions.
+ * Plain C (host or target): no heap; stdio (snprintf) only in the describe
+ * functions.
  * Compile it against the same options header as the core it records. The
  * Unity assertions over it are in daran_recorder_unity.h. */
 #ifndef DARAN_RECORDER_H
@@ -80,12 +81,18 @@ typedef struct daran_recorder {
 extern const daran_hal_t daran_recorder_hal;
 
 /** Record calls to @p inner (with @p inner_ctx), or, with @p inner NULL,
- * serve them from the store: every value 0 but node id @p node_id... see
- * daran_recorder_init_store(). Forgets everything. */
+ * serve them from the store as daran_recorder_init_store(rec, 1) does.
+ * Forgets everything: calls, replies, fault injection; log_gets false. */
 void daran_recorder_init(daran_recorder_t *rec, const daran_hal_t *inner, void *inner_ctx);
 
 /** The store double: no inner HAL, every value 0 except node id @p node_id
- * and closed loop (requested and current state 8), so motion is accepted. */
+ * and closed loop (requested and current state 8), so motion is accepted.
+ * It keeps the HAL contract's bookkeeping (docs/porting.md section 3) and
+ * nothing more: a set stores (requested_state also sets current_state, a
+ * setpoint its output_shaft.input_*), a move stores its targets and given
+ * rates in their properties, `st` goes idle with DARAN_FLAG_ESTOP, `sc`
+ * clears the error registers, `sz` zeroes the position; no physics, no
+ * non-volatile memory. */
 void daran_recorder_init_store(daran_recorder_t *rec, uint32_t node_id);
 
 /** Forget the calls and replies (the store and the fault injection stay). */
@@ -108,6 +115,23 @@ bool daran_recorder_no_effect(const daran_recorder_t *rec);
 size_t daran_recorder_count(const daran_recorder_t *rec, daran_call_kind_t kind, int action);
 /** The first logged call of @p kind, or NULL. */
 const daran_call_t *daran_recorder_first(const daran_recorder_t *rec, daran_call_kind_t kind);
+
+/** SET calls (or logged GET calls) of property @p prop. */
+size_t daran_recorder_count_prop(const daran_recorder_t *rec, daran_call_kind_t kind,
+                                 daran_prop_t prop);
+/** True when the replies captured since the last clear are exactly
+ * @p expected, in which each "\n" stands for the configured line end
+ * (\r\n with DARAN_REPLY_CRLF 1). False when replies were dropped. */
+bool daran_recorder_reply_equals(const daran_recorder_t *rec, const char *expected);
+
+/** The wire path of @p prop ("axis0.controller.config.pos_gain",
+ * "vbus_voltage"), NUL terminated, cut to @p size; "?" outside the list.
+ * Returns the length it would have had. */
+size_t daran_recorder_prop_path(daran_prop_t prop, char *buf, size_t size);
+/** "FILTERED_POSITION", "TRAPEZOID", ...; "?" outside the enum. */
+const char *daran_recorder_move_name(daran_move_kind_t kind);
+/** "SAVE_CONFIG", "ESTOP", ...; "?" outside the enum. */
+const char *daran_recorder_action_name(daran_action_t action);
 
 /** One call as text ("set axis0.controller.config.pos_gain 20 -> ok"), NUL
  * terminated, cut to @p size. Returns the length it would have had. */
