@@ -1,10 +1,20 @@
 /* The fuzz harness's own reading of the protocol (testkit/fuzz/fuzz_checks.c
  * and fuzz_recording.c): each check must refuse what breaks the protocol,
  * or the fuzz target would pass a port that does. */
+#include <stdio.h>
 #include <string.h>
 
 #include "daran_fuzz.h"
 #include "unity.h"
+
+/* The line end this build's replies carry (DARAN_REPLY_CRLF). */
+#if DARAN_REPLY_CRLF
+#define END "\r\n"
+#define OTHER_END "\n"
+#else
+#define END "\n"
+#define OTHER_END "\r\n"
+#endif
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -22,60 +32,69 @@ static int motor(const char *line)
 
 static void test_core_replies_are_well_formed(void)
 {
-    TEST_ASSERT_NULL(problem("1.5 -2\r\n"));
-    TEST_ASSERT_NULL(problem("error: invalid motor\r\n"));
-    TEST_ASSERT_NULL(problem("axis: 0\r\n"));
+    TEST_ASSERT_NULL(problem("1.5 -2" END));
+    TEST_ASSERT_NULL(problem("error: invalid motor" END));
+    TEST_ASSERT_NULL(problem("axis: 0" END));
     /* "0 0" XOR " " is 0 ^ ' ' ^ 0 ^ ' ' = 0x30 ^ 0x20 ^ 0x30 ^ 0x20 = 0 */
-    TEST_ASSERT_NULL(problem("0 0 *0\r\n"));
-    TEST_ASSERT_NULL(problem("error: checksum mismatch *107\r\n"));
+    TEST_ASSERT_NULL(problem("0 0 *0" END));
+    TEST_ASSERT_NULL(problem("error: checksum mismatch *107" END));
 }
 
 static void test_a_reply_without_its_line_end_is_refused(void)
 {
     TEST_ASSERT_NOT_NULL(problem("1.5"));
-    TEST_ASSERT_NOT_NULL(problem("1.5\n"));
-    TEST_ASSERT_NOT_NULL(problem("1.5\r\n\r\n"));
-    TEST_ASSERT_NOT_NULL(problem("\r\n"));
+    TEST_ASSERT_NOT_NULL(problem("1.5" OTHER_END));
+    TEST_ASSERT_NOT_NULL(problem("1.5\r\n" END));
+    TEST_ASSERT_NOT_NULL(problem("" END));
 }
 
 static void test_a_reply_that_is_not_printable_ascii_is_refused(void)
 {
-    TEST_ASSERT_NOT_NULL(problem("41.5 \xc2\xb0" "C\r\n"));
-    TEST_ASSERT_NOT_NULL(problem("1\t2\r\n"));
-    TEST_ASSERT_NOT_NULL(problem("1\r2\r\n"));
-    TEST_ASSERT_NOT_NULL(daran_fuzz_reply_problem("1\0002\r\n", 5));
+    static const char nul_inside[] = "1\0002" END;
+    TEST_ASSERT_NOT_NULL(problem("41.5 \xc2\xb0" "C" END));
+    TEST_ASSERT_NOT_NULL(problem("1\t2" END));
+    TEST_ASSERT_NOT_NULL(problem("1\r2" END));
+    TEST_ASSERT_NOT_NULL(daran_fuzz_reply_problem(nul_inside, sizeof nul_inside - 1u));
 }
 
 static void test_a_reply_longer_than_reply_max_is_refused(void)
 {
-    char line[DARAN_REPLY_MAX + 2];
+    char line[DARAN_REPLY_MAX + 1];
     memset(line, 'x', sizeof line);
-    line[sizeof line - 2u] = '\r';
-    line[sizeof line - 1u] = '\n';
+    memcpy(line + sizeof line - (sizeof END - 1u), END, sizeof END - 1u);
     TEST_ASSERT_NOT_NULL(daran_fuzz_reply_problem(line, sizeof line));
-    TEST_ASSERT_NULL(daran_fuzz_reply_problem(line + 2, sizeof line - 2u));
+    TEST_ASSERT_NULL(daran_fuzz_reply_problem(line + 1, sizeof line - 1u));
 }
 
 static void test_a_wrong_or_malformed_checksum_tail_is_refused(void)
 {
-    TEST_ASSERT_NOT_NULL(problem("0 0 *1\r\n"));    /* wrong */
-    TEST_ASSERT_NOT_NULL(problem("0 0 *00\r\n"));   /* leading zero */
-    TEST_ASSERT_NOT_NULL(problem("0 0*0\r\n"));     /* no space before '*' */
-    TEST_ASSERT_NOT_NULL(problem("0 0 *\r\n"));     /* no digits */
-    TEST_ASSERT_NOT_NULL(problem("0 0 *1234\r\n")); /* four digits */
-    TEST_ASSERT_NOT_NULL(problem("a*b 0\r\n"));     /* a '*' inside */
+    TEST_ASSERT_NOT_NULL(problem("0 0 *1" END));    /* wrong */
+    TEST_ASSERT_NOT_NULL(problem("0 0 *00" END));   /* leading zero */
+    TEST_ASSERT_NOT_NULL(problem("0 0*0" END));     /* no space before '*' */
+    TEST_ASSERT_NOT_NULL(problem("0 0 *" END));     /* no digits */
+    TEST_ASSERT_NOT_NULL(problem("0 0 *1234" END)); /* four digits */
+    TEST_ASSERT_NOT_NULL(problem("a*b 0" END));     /* a '*' inside */
 }
 
 static void test_an_error_with_an_unknown_phrase_is_refused(void)
 {
-    TEST_ASSERT_NOT_NULL(problem("error: no such thing\r\n"));
-    TEST_ASSERT_NOT_NULL(problem("error:invalid motor\r\n"));
-    TEST_ASSERT_NOT_NULL(problem("error: Invalid motor\r\n"));
-    TEST_ASSERT_NOT_NULL(problem("error\r\n"));
+    TEST_ASSERT_NOT_NULL(problem("error: no such thing" END));
+    TEST_ASSERT_NOT_NULL(problem("error:invalid motor" END));
+    TEST_ASSERT_NOT_NULL(problem("error: Invalid motor" END));
+    TEST_ASSERT_NOT_NULL(problem("error" END));
 }
+
+/* The id cases use ids up to 63, the protocol's default limit. */
+#define NEEDS_IDS_UP_TO_63()                                         \
+    do {                                                             \
+        if (DARAN_MOTOR_ID_MAX < 63) {                               \
+            TEST_IGNORE_MESSAGE("this build's DARAN_MOTOR_ID_MAX < 63"); \
+        }                                                            \
+    } while (0)
 
 static void test_lines_are_read_for_the_id_they_carry(void)
 {
+    NEEDS_IDS_UP_TO_63();
     TEST_ASSERT_EQUAL_INT(2, motor("t 2 10"));
     TEST_ASSERT_EQUAL_INT(2, motor("  T\t2 10 \r"));
     TEST_ASSERT_EQUAL_INT(5, motor("r axis5.motor.error"));
@@ -89,6 +108,9 @@ static void test_lines_are_read_for_the_id_they_carry(void)
 
 static void test_ids_follow_the_number_grammar(void)
 {
+    char beyond[32];
+    NEEDS_IDS_UP_TO_63();
+    (void)snprintf(beyond, sizeof beyond, "t %d 1", DARAN_MOTOR_ID_MAX + 1);
     TEST_ASSERT_EQUAL_INT(5, motor("t 5e0 1"));
     TEST_ASSERT_EQUAL_INT(5, motor("t 50e-1 1"));
     TEST_ASSERT_EQUAL_INT(5, motor("t +5 1"));
@@ -97,7 +119,7 @@ static void test_ids_follow_the_number_grammar(void)
     TEST_ASSERT_EQUAL_INT(63, motor("t .63e2 1"));
     TEST_ASSERT_EQUAL_INT(DARAN_FUZZ_EVERY_DRIVE, motor("t 1.5 1"));
     TEST_ASSERT_EQUAL_INT(DARAN_FUZZ_EVERY_DRIVE, motor("t -1 1"));
-    TEST_ASSERT_EQUAL_INT(DARAN_FUZZ_EVERY_DRIVE, motor("t 64 1"));
+    TEST_ASSERT_EQUAL_INT(DARAN_FUZZ_EVERY_DRIVE, motor(beyond));
     TEST_ASSERT_EQUAL_INT(DARAN_FUZZ_EVERY_DRIVE, motor("t 1e999 1"));
     TEST_ASSERT_EQUAL_INT(DARAN_FUZZ_EVERY_DRIVE, motor("t x 1"));
     TEST_ASSERT_EQUAL_INT(DARAN_FUZZ_EVERY_DRIVE, motor("r axis.motor.error"));
