@@ -36,11 +36,15 @@ OPS = [(r"(?<![<>=!])==(?!=)", "!="), (r"!=", "=="), (r"(?<![<-])<=", "<"),
 
 def test_programs(repo):
     """Every unit program: the areas of tests/unit/areas.cmake (so a new suite
-    counts at once) and the number module's own unit suites."""
+    counts at once), the number module's own unit suites and the float
+    interval suite."""
     text = open(os.path.join(repo, "tests", "unit", "areas.cmake")).read()
     block = re.search(r"set\(DARAN_UNIT_AREAS(.*?)\)", text, re.S)
+    # porting_float_intervals: a core whose float rows have interval ranges,
+    # the only build that compiles the interval check (DARAN_F32_INTERVALS)
     return (["tests/unit/unit_" + a for a in block.group(1).split()]
-            + ["tests/number/number_unit", "tests/number/number_pow10"])
+            + ["tests/number/number_unit", "tests/number/number_pow10",
+               "tests/porting/porting_float_intervals"])
 
 
 def equivalent_mutants(repo):
