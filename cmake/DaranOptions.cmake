@@ -32,6 +32,13 @@ endif()
 # for the functions that compile its sources (here: this source tree).
 include(DaranAddLibrary)
 daran_ascii_set_root("${PROJECT_SOURCE_DIR}" "${PROJECT_SOURCE_DIR}/include")
+# The package's other functions, defined whether or not this build makes the
+# simulator or the test kit itself (a project that adds this tree with
+# add_subdirectory() calls them for its own core).
+include(DaranSim)
+include(DaranTestSupport)
+include(DaranConformance)
+include(DaranFuzzTarget)
 set(DARAN_CORE_C_STANDARD 11 CACHE STRING "C standard the core is compiled with (99 or 11)")
 
 function(daran_strict_warnings target)

@@ -111,6 +111,16 @@ for h in $harnesses; do
     fi
 done
 
+# An adopter's port through daran_ascii_add_fuzz_target(): port/minimal, 20 s
+# from the vendor clients' recordings (tests/adopter-fuzz).
+echo "40-fuzz: adopter_fuzz (port/minimal through daran_ascii_add_fuzz_target), 20 s"
+if ! nice -n 10 cmake --build --preset fuzz -j2 --target adopter_fuzz_run >"$work/adopter.log" 2>&1; then
+    failed=1
+    echo "40-fuzz: adopter_fuzz FAILED; the end of its log:"
+    grep -v '^#' "$work/adopter.log" | tail -n 40
+    ls build/fuzz/tests/adopter-fuzz/adopter_fuzz_findings/
+fi
+
 if [ $failed -ne 0 ]; then
     echo "40-fuzz: FAILED: add each reproducer to tests/corpus/regressions/<harness>/<what-it-guards>"
     exit 1
