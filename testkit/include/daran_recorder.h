@@ -75,6 +75,12 @@ typedef struct daran_recorder {
     size_t out_len;
     size_t out_dropped;
     size_t n_replies;         /**< reply lines written */
+
+    /** Optional (NULL: none): called after every call, GET included and
+     * logged or not, with its record (result filled in), for a test double
+     * of one's own that keeps its own log or checks each call as it comes. */
+    void (*observer)(void *ctx, const daran_call_t *call);
+    void *observer_ctx;
 } daran_recorder_t;
 
 /** The recording HAL; its context is a daran_recorder_t. */
@@ -82,7 +88,8 @@ extern const daran_hal_t daran_recorder_hal;
 
 /** Record calls to @p inner (with @p inner_ctx), or, with @p inner NULL,
  * serve them from the store as daran_recorder_init_store(rec, 1) does.
- * Forgets everything: calls, replies, fault injection; log_gets false. */
+ * Forgets everything: calls, replies, fault injection, observer; log_gets
+ * false. */
 void daran_recorder_init(daran_recorder_t *rec, const daran_hal_t *inner, void *inner_ctx);
 
 /** The store double: no inner HAL, every value 0 except node id @p node_id

@@ -36,24 +36,34 @@ static bool prop_known(daran_prop_t prop)
 
 /* ---- logging and fault injection ---- */
 
-static daran_call_t *log_call(daran_recorder_t *rec, daran_call_kind_t kind)
+/* A call's record, filled in by the HAL function, then kept (finish()). */
+static void begin_record(daran_call_t *record, daran_call_kind_t kind)
 {
-    if (kind == DARAN_CALL_GET) {
+    memset(record, 0, sizeof *record);
+    record->kind = kind;
+}
+
+/* Count the call, keep it in the log if it is logged and there is room,
+ * and hand it to the observer. */
+static void finish(daran_recorder_t *rec, const daran_call_t *record)
+{
+    bool logged = true;
+    if (record->kind == DARAN_CALL_GET) {
         rec->n_gets++;
-        if (!rec->log_gets) {
-            return NULL;
-        }
+        logged = rec->log_gets;
     } else {
         rec->n_mutations++;
     }
-    if (rec->n_calls == DARAN_RECORDER_CALLS_MAX) {
-        rec->n_dropped++;
-        return NULL;
+    if (logged) {
+        if (rec->n_calls < DARAN_RECORDER_CALLS_MAX) {
+            rec->calls[rec->n_calls++] = *record;
+        } else {
+            rec->n_dropped++;
+        }
     }
-    daran_call_t *call = &rec->calls[rec->n_calls++];
-    memset(call, 0, sizeof *call);
-    call->kind = kind;
-    return call;
+    if (rec->observer != NULL) {
+        rec->observer(rec->observer_ctx, record);
+    }
 }
 
 /* Does this call take the injected failure? prop is -1 for moves and
@@ -177,87 +187,79 @@ static daran_result_t store_action(daran_recorder_t *rec, daran_action_t action)
 static daran_result_t recorder_get(void *ctx, daran_prop_t prop, daran_value_t *out)
 {
     daran_recorder_t *rec = ctx;
-    daran_call_t *call = log_call(rec, DARAN_CALL_GET);
-    daran_result_t result;
+    daran_call_t record;
+    begin_record(&record, DARAN_CALL_GET);
+    record.prop = prop;
     if (take_failure(rec, DARAN_CALL_GET, (int)prop)) {
-        result = rec->fail_result;
+        record.result = rec->fail_result;
     } else if (rec->inner != NULL) {
-        result = rec->inner->get(rec->inner_ctx, prop, out);
+        record.result = rec->inner->get(rec->inner_ctx, prop, out);
     } else if (prop_known(prop)) {
         *out = rec->store[prop];
-        result = DARAN_OK;
+        record.result = DARAN_OK;
     } else {
-        result = DARAN_ERR_INVALID_PROPERTY;
+        record.result = DARAN_ERR_INVALID_PROPERTY;
     }
-    if (call != NULL) {
-        call->prop = prop;
-        call->result = result;
-        if (result == DARAN_OK) {
-            call->value = *out;
-        }
+    if (record.result == DARAN_OK) {
+        record.value = *out;
     }
-    return result;
+    finish(rec, &record);
+    return record.result;
 }
 
 static daran_result_t recorder_set(void *ctx, daran_prop_t prop, daran_value_t value)
 {
     daran_recorder_t *rec = ctx;
-    daran_call_t *call = log_call(rec, DARAN_CALL_SET);
-    daran_result_t result;
+    daran_call_t record;
+    begin_record(&record, DARAN_CALL_SET);
+    record.prop = prop;
+    record.value = value;
     if (take_failure(rec, DARAN_CALL_SET, (int)prop)) {
-        result = rec->fail_result;
+        record.result = rec->fail_result;
     } else if (rec->inner != NULL) {
-        result = rec->inner->set(rec->inner_ctx, prop, value);
+        record.result = rec->inner->set(rec->inner_ctx, prop, value);
     } else if (prop_known(prop)) {
         store_set(rec, prop, value);
-        result = DARAN_OK;
+        record.result = DARAN_OK;
     } else {
-        result = DARAN_ERR_INVALID_PROPERTY;
+        record.result = DARAN_ERR_INVALID_PROPERTY;
     }
-    if (call != NULL) {
-        call->prop = prop;
-        call->value = value;
-        call->result = result;
-    }
-    return result;
+    finish(rec, &record);
+    return record.result;
 }
 
 static daran_result_t recorder_move(void *ctx, const daran_move_t *move)
 {
     daran_recorder_t *rec = ctx;
-    daran_call_t *call = log_call(rec, DARAN_CALL_MOVE);
-    daran_result_t result;
+    daran_call_t record;
+    begin_record(&record, DARAN_CALL_MOVE);
+    record.move = *move;
     if (take_failure(rec, DARAN_CALL_MOVE, -1)) {
-        result = rec->fail_result;
+        record.result = rec->fail_result;
     } else if (rec->inner != NULL) {
-        result = rec->inner->move(rec->inner_ctx, move);
+        record.result = rec->inner->move(rec->inner_ctx, move);
     } else {
-        result = store_move(rec, move);
+        record.result = store_move(rec, move);
     }
-    if (call != NULL) {
-        call->move = *move;
-        call->result = result;
-    }
-    return result;
+    finish(rec, &record);
+    return record.result;
 }
 
 static daran_result_t recorder_action(void *ctx, daran_action_t action)
 {
     daran_recorder_t *rec = ctx;
-    daran_call_t *call = log_call(rec, DARAN_CALL_ACTION);
-    daran_result_t result;
+    daran_call_t record;
+    begin_record(&record, DARAN_CALL_ACTION);
+    record.action = action;
     if (take_failure(rec, DARAN_CALL_ACTION, -1)) {
-        result = rec->fail_result;
+        record.result = rec->fail_result;
     } else if (rec->inner != NULL) {
-        result = rec->inner->action(rec->inner_ctx, action);
+        record.result = rec->inner->action(rec->inner_ctx, action);
     } else {
-        result = store_action(rec, action);
+        record.result = store_action(rec, action);
     }
-    if (call != NULL) {
-        call->action = action;
-        call->result = result;
-    }
-    return result;
+    finish(rec, &record);
+    return record.result;
 }
 
 const daran_hal_t daran_recorder_hal = {recorder_get, recorder_set, recorder_move,
