@@ -536,7 +536,7 @@ int conf_report(void)
         failed += c->failed;
         skipped += c->skipped;
     }
-    printf("\nport: %s; %u checks skipped (not in this build)\n",
+    printf("\nport: %s; %u checks skipped (not in this build, or nothing to check: --verbose says why)\n",
            h.port->name != NULL ? h.port->name : "(unnamed)", skipped);
     printf("%u passed, %u failed\n", passed, failed);
     return failed == 0u ? 0 : 1;
