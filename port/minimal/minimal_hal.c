@@ -125,10 +125,20 @@ static daran_result_t move(void *ctx, const daran_move_t *request)
     /* The protocol promises that `r` reads a command's targets back at once. */
     switch (request->kind) {
     case DARAN_MOVE_FILTERED_POSITION:
-    case DARAN_MOVE_TRAPEZOID:
         p[DARAN_PROP_INPUT_POS].f32 = request->pos_deg;
-        if (request->kind == DARAN_MOVE_FILTERED_POSITION && (request->given & DARAN_GIVEN_RATE)) {
+        if (request->given & DARAN_GIVEN_RATE) {
             p[DARAN_PROP_INPUT_FILTER_BANDWIDTH].f32 = request->rate;
+        }
+        break;
+    case DARAN_MOVE_TRAPEZOID:
+        /* a given cruise and acceleration become the trapezoid settings (D20) */
+        p[DARAN_PROP_INPUT_POS].f32 = request->pos_deg;
+        if (request->given & DARAN_GIVEN_VEL) {
+            p[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 = request->vel_rpm;
+        }
+        if (request->given & DARAN_GIVEN_RATE) {
+            p[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 = request->rate;
+            p[DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT].f32 = request->rate;
         }
         break;
     case DARAN_MOVE_PASSTHROUGH:
