@@ -55,12 +55,17 @@ static void mock_defaults(mock_t *m, uint32_t id)
     p[DARAN_PROP_INPUT_MODE].u32 = 3;
 }
 
+static const daran_hal_t mock_store_fns;
+static void mock_observe(void *ctx, const daran_call_t *call);
+
 mock_t *mock_new_slot(int slot, uint32_t id)
 {
     mock_t *m = &mock_instances[slot];
     memset(m, 0, sizeof *m);
     m->react = true;
-    m->fail_prop = -1;
+    daran_recorder_init(&m->rec, &mock_store_fns, m);
+    m->rec.observer = mock_observe;
+    m->rec.observer_ctx = m;
     mock_defaults(m, id);
     daran_result_t r = daran_init(&m->drive, &mock_hal_fns, m, mock_write, m);
     TEST_ASSERT_EQUAL_INT(DARAN_OK, r);
@@ -74,6 +79,7 @@ void mock_enable_forward(mock_t *m) { daran_set_forward(&m->drive, mock_forward,
 
 void mock_clear(mock_t *m)
 {
+    daran_recorder_clear(&m->rec);
     memset(m->calls, 0, sizeof m->calls);
     m->n_calls = 0;
     m->n_gets = 0;
@@ -83,61 +89,44 @@ void mock_clear(mock_t *m)
     m->n_fwd = 0;
 }
 
-/* ---- fault injection ---- */
+/* ---- fault injection and logging: the recorder's ---- */
 
 void mock_fail(mock_t *m, unsigned mask, unsigned nth, daran_result_t result, int prop)
 {
-    m->fail_mask = mask;
-    m->fail_countdown = nth;
-    m->fail_result = result;
-    m->fail_prop = prop;
+    daran_recorder_fail(&m->rec, mask, nth, result, prop);
 }
 
-static bool mock_should_fail(mock_t *m, unsigned kind, int prop)
+/* The recorder's observer: every call as it completed, failed ones too. */
+static void mock_observe(void *ctx, const daran_call_t *call)
 {
-    if (m->fail_countdown == 0 || (m->fail_mask & kind) == 0)
-        return false;
-    if (m->fail_prop >= 0 && m->fail_prop != prop)
-        return false;
-    if (--m->fail_countdown != 0)
-        return false;
-    return true;
-}
-
-static mock_call_t *mock_log(mock_t *m, mock_call_kind_t kind)
-{
+    mock_t *m = ctx;
+    if (call->kind == DARAN_CALL_GET) {
+        m->n_gets++;
+        return;
+    }
     TEST_ASSERT_TRUE(m->n_calls < MOCK_CALLS_MAX);
-    mock_call_t *c = &m->calls[m->n_calls++];
-    memset(c, 0, sizeof *c);
-    c->kind = kind;
-    return c;
+    m->calls[m->n_calls++] = *call;
 }
 
-/* ---- the HAL ---- */
+/* ---- the store: the recorder's inner HAL (reached unless a call is made to fail) ---- */
 
-static daran_result_t mock_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+static daran_result_t mock_store_get(void *ctx, daran_prop_t prop, daran_value_t *out)
 {
     mock_t *m = ctx;
     TEST_ASSERT_TRUE((int)prop >= 0 && prop < DARAN_PROP_COUNT);
     TEST_ASSERT_NOT_NULL(out);
-    m->n_gets++;
-    if (mock_should_fail(m, MOCK_FAIL_GET, (int)prop))
-        return m->fail_result;
+    if ((unsigned)prop >= (unsigned)DARAN_PROP_COUNT)
+        return DARAN_ERR_BAD_ARGUMENT; /* a failed assertion that returned */
     *out = m->props[prop];
     return DARAN_OK;
 }
 
-static daran_result_t mock_set(void *ctx, daran_prop_t prop, daran_value_t value)
+static daran_result_t mock_store_set(void *ctx, daran_prop_t prop, daran_value_t value)
 {
     mock_t *m = ctx;
     TEST_ASSERT_TRUE((int)prop >= 0 && prop < DARAN_PROP_COUNT);
-    mock_call_t *c = mock_log(m, MOCK_CALL_SET);
-    c->prop = prop;
-    c->value = value;
-    if (mock_should_fail(m, MOCK_FAIL_SET, (int)prop)) {
-        c->result = m->fail_result;
-        return m->fail_result;
-    }
+    if ((unsigned)prop >= (unsigned)DARAN_PROP_COUNT)
+        return DARAN_ERR_BAD_ARGUMENT; /* a failed assertion that returned */
     m->props[prop] = value;
     if (m->react) {
         daran_value_t *p = m->props;
@@ -152,16 +141,10 @@ static daran_result_t mock_set(void *ctx, daran_prop_t prop, daran_value_t value
     return DARAN_OK;
 }
 
-static daran_result_t mock_move(void *ctx, const daran_move_t *mv)
+static daran_result_t mock_store_move(void *ctx, const daran_move_t *mv)
 {
     mock_t *m = ctx;
     TEST_ASSERT_NOT_NULL(mv);
-    mock_call_t *c = mock_log(m, MOCK_CALL_MOVE);
-    c->move = *mv;
-    if (mock_should_fail(m, MOCK_FAIL_MOVE, -1)) {
-        c->result = m->fail_result;
-        return m->fail_result;
-    }
     if (!m->react)
         return DARAN_OK;
     daran_value_t *p = m->props;
@@ -213,15 +196,9 @@ static daran_result_t mock_move(void *ctx, const daran_move_t *mv)
     return DARAN_OK;
 }
 
-static daran_result_t mock_action(void *ctx, daran_action_t action)
+static daran_result_t mock_store_action(void *ctx, daran_action_t action)
 {
     mock_t *m = ctx;
-    mock_call_t *c = mock_log(m, MOCK_CALL_ACTION);
-    c->action = action;
-    if (mock_should_fail(m, MOCK_FAIL_ACTION, -1)) {
-        c->result = m->fail_result;
-        return m->fail_result;
-    }
     if (!m->react)
         return DARAN_OK;
     daran_value_t *p = m->props;
@@ -260,6 +237,35 @@ static daran_result_t mock_action(void *ctx, daran_action_t action)
     default: TEST_FAIL_MESSAGE_F("action %d outside the enum", (int)action);
     }
     return DARAN_OK;
+}
+
+static const daran_hal_t mock_store_fns = {mock_store_get, mock_store_set, mock_store_move,
+                                           mock_store_action};
+
+/* ---- the HAL a drive is bound to: the mock's recorder ---- */
+
+static daran_result_t mock_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+{
+    mock_t *m = ctx;
+    return daran_recorder_hal.get(&m->rec, prop, out);
+}
+
+static daran_result_t mock_set(void *ctx, daran_prop_t prop, daran_value_t value)
+{
+    mock_t *m = ctx;
+    return daran_recorder_hal.set(&m->rec, prop, value);
+}
+
+static daran_result_t mock_move(void *ctx, const daran_move_t *mv)
+{
+    mock_t *m = ctx;
+    return daran_recorder_hal.move(&m->rec, mv);
+}
+
+static daran_result_t mock_action(void *ctx, daran_action_t action)
+{
+    mock_t *m = ctx;
+    return daran_recorder_hal.action(&m->rec, action);
 }
 
 const daran_hal_t mock_hal_fns = {mock_get, mock_set, mock_move, mock_action};

@@ -6,6 +6,11 @@
  * does (st -> idle + estop flag, sc clears, requested_state -> current_state)
  * and can make the Nth call of chosen kinds fail (fault injection).
  *
+ * The logging and the fault injection are the installed recording HAL's
+ * (testkit/include/daran_recorder.h): each mock embeds a daran_recorder_t
+ * whose inner HAL is the mock's store, and its observer keeps the calls
+ * below, so the double an adopter installs runs under every unit suite.
+ *
  * The UPPER-CASE helpers are macros so that a failure points at the test's
  * line, not at this file. */
 #ifndef MOCK_HAL_H
@@ -19,28 +24,26 @@
 #include "unity.h"
 
 #include "daran_ascii.h"
+#include "daran_recorder.h"
 
 #define MOCK_CALLS_MAX (DARAN_RX_RING_SIZE / 4 + 128) /* a ring full of "u 1" lines */
 #define MOCK_OUT_MAX 16384
 #define MOCK_FWD_MAX 32
 #define MOCK_INSTANCES 3
 
-typedef enum mock_call_kind { MOCK_CALL_SET, MOCK_CALL_MOVE, MOCK_CALL_ACTION } mock_call_kind_t;
-
-typedef struct mock_call {
-    mock_call_kind_t kind;
-    daran_prop_t prop;      /* SET */
-    daran_value_t value;    /* SET */
-    daran_move_t move;      /* MOVE */
-    daran_action_t action;  /* ACTION */
-    daran_result_t result;  /* what the mock returned */
-} mock_call_t;
+/* A logged call: the recorder's record (kind, prop and value for SET, move
+ * for MOVE, action for ACTION, and what the call returned). */
+typedef daran_call_kind_t mock_call_kind_t;
+typedef daran_call_t mock_call_t;
+#define MOCK_CALL_SET DARAN_CALL_SET
+#define MOCK_CALL_MOVE DARAN_CALL_MOVE
+#define MOCK_CALL_ACTION DARAN_CALL_ACTION
 
 /* Kinds a fault injection may target. */
-#define MOCK_FAIL_GET (1u << 0)
-#define MOCK_FAIL_SET (1u << 1)
-#define MOCK_FAIL_MOVE (1u << 2)
-#define MOCK_FAIL_ACTION (1u << 3)
+#define MOCK_FAIL_GET DARAN_RECORDER_FAIL_GET
+#define MOCK_FAIL_SET DARAN_RECORDER_FAIL_SET
+#define MOCK_FAIL_MOVE DARAN_RECORDER_FAIL_MOVE
+#define MOCK_FAIL_ACTION DARAN_RECORDER_FAIL_ACTION
 
 typedef struct mock_forward {
     uint8_t id;
@@ -53,14 +56,12 @@ typedef struct mock {
     daran_value_t props[DARAN_PROP_COUNT];
     bool react; /* model state changes on actions/sets (default true) */
 
-    mock_call_t calls[MOCK_CALLS_MAX];
+    /* Every HAL call goes through it (logging, fault injection), then to
+     * the store above. */
+    daran_recorder_t rec;
+    mock_call_t calls[MOCK_CALLS_MAX]; /* set/move/action, as the recorder saw them */
     size_t n_calls;
     size_t n_gets;
-
-    unsigned fail_mask;          /* kinds counted for the injection */
-    unsigned fail_countdown;     /* 0: off; 1: the next matching call fails */
-    daran_result_t fail_result;
-    int fail_prop;               /* -1: any property; else only get/set of it */
 
     char out[MOCK_OUT_MAX + 1];
     size_t out_len;
