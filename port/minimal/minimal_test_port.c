@@ -1,5 +1,7 @@
-/* port/minimal handed to the conformance suite: its HAL, its drive, and
- * the factory state minimal_drive_init() gives (daran_test_port.h). The
+/* port/minimal's test-port file: its HAL, its drive and the factory state
+ * minimal_drive_init() gives (daran_test_port.h), the file a drive maker
+ * writes for daran_ascii_add_conformance_test() and
+ * daran_ascii_add_fuzz_target() (tests/conformance, tests/adopter-fuzz). The
  * minimal port keeps no time: no advance(). */
 #include "daran_test_port.h"
 
