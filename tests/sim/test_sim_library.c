@@ -10,45 +10,7 @@
 #include "unity.h"
 
 #include "daran_sim.h"
-
-static daran_sim_drive_t sim;
-static daran_drive_t drive;
-static char reply[512];
-static size_t reply_len;
-
-static void collect(void *ctx, const char *line, size_t len)
-{
-    (void)ctx;
-    if (len < sizeof reply - reply_len) {
-        memcpy(reply + reply_len, line, len);
-        reply_len += len;
-    }
-    reply[reply_len] = '\0';
-}
-
-void setUp(void)
-{
-    daran_sim_drive_init(&sim, 0u, 1000u);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &daran_sim_hal, &sim, collect, NULL));
-    reply_len = 0u;
-    reply[0] = '\0';
-}
-
-void tearDown(void)
-{
-}
-
-/* Send one line; returns the reply without its line end ("" for none). */
-static const char *say(const char *line)
-{
-    reply_len = 0u;
-    reply[0] = '\0';
-    (void)daran_process_line(&drive, line, strlen(line));
-    while (reply_len > 0u && (reply[reply_len - 1u] == '\n' || reply[reply_len - 1u] == '\r')) {
-        reply[--reply_len] = '\0';
-    }
-    return reply;
-}
+#include "sim_one_drive.h"
 
 static void run_ms(uint32_t ms)
 {
@@ -106,10 +68,10 @@ static void test_an_extension_serves_the_property_it_claims(void)
 {
     brake_ext_t b = {4.5f, 0u, 0u};
     daran_sim_drive_extend(&sim, &brake_extension, &b);
-    TEST_ASSERT_EQUAL_STRING("4.5", say("r config.brake_resistance 1"));
-    TEST_ASSERT_EQUAL_STRING("", say("w config.brake_resistance 7.25 1"));
+    TEST_ASSERT_EQUAL_STRING("4.5", sim_say("r config.brake_resistance 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w config.brake_resistance 7.25 1"));
     TEST_ASSERT_EQUAL_FLOAT(7.25f, b.ohm);
-    TEST_ASSERT_EQUAL_STRING("7.25", say("r config.brake_resistance 1"));
+    TEST_ASSERT_EQUAL_STRING("7.25", sim_say("r config.brake_resistance 1"));
     /* the model's own value is untouched: the extension owns the row */
     TEST_ASSERT_EQUAL_FLOAT(2.0f, sim.model.cfg[DARAN_PROP_BRAKE_RESISTANCE].f32);
 }
@@ -118,9 +80,9 @@ static void test_an_extension_falls_through_to_the_model_for_other_rows(void)
 {
     brake_ext_t b = {4.5f, 0u, 0u};
     daran_sim_drive_extend(&sim, &brake_extension, &b);
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.controller.config.pos_gain 30"));
-    TEST_ASSERT_EQUAL_STRING("30", say("r axis0.controller.config.pos_gain"));
-    TEST_ASSERT_EQUAL_STRING("24", say("r vbus_voltage 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.controller.config.pos_gain 30"));
+    TEST_ASSERT_EQUAL_STRING("30", sim_say("r axis0.controller.config.pos_gain"));
+    TEST_ASSERT_EQUAL_STRING("24", sim_say("r vbus_voltage 1"));
     TEST_ASSERT_TRUE(b.gets > 0u); /* asked first, even for the model's rows */
 }
 
@@ -128,7 +90,7 @@ static void test_an_extension_refusal_is_the_reply_and_changes_nothing(void)
 {
     brake_ext_t b = {4.5f, 0u, 0u};
     daran_sim_drive_extend(&sim, &brake_extension, &b);
-    TEST_ASSERT_EQUAL_STRING("error: value out of range", say("w config.brake_resistance 12 1"));
+    TEST_ASSERT_EQUAL_STRING("error: value out of range", sim_say("w config.brake_resistance 12 1"));
     TEST_ASSERT_EQUAL_FLOAT(4.5f, b.ohm);
 }
 
@@ -145,7 +107,7 @@ static void test_removing_the_extension_gives_the_model_back(void)
     brake_ext_t b = {4.5f, 0u, 0u};
     daran_sim_drive_extend(&sim, &brake_extension, &b);
     daran_sim_drive_extend(&sim, NULL, &b);
-    TEST_ASSERT_EQUAL_STRING("2", say("r config.brake_resistance 1"));
+    TEST_ASSERT_EQUAL_STRING("2", sim_say("r config.brake_resistance 1"));
     run_ms(3u);
     TEST_ASSERT_EQUAL_UINT32(0u, b.ticks);
 }
@@ -154,8 +116,8 @@ static void test_the_extension_stays_across_a_reboot(void)
 {
     brake_ext_t b = {4.5f, 0u, 0u};
     daran_sim_drive_extend(&sim, &brake_extension, &b);
-    TEST_ASSERT_EQUAL_STRING("", say("sr 1"));
-    TEST_ASSERT_EQUAL_STRING("4.5", say("r config.brake_resistance 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sr 1"));
+    TEST_ASSERT_EQUAL_STRING("4.5", sim_say("r config.brake_resistance 1"));
 }
 
 /* ---- physical faults ---- */
@@ -164,22 +126,22 @@ static void test_an_injected_stall_trips_the_drive(void)
 {
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_sim_drive_inject_fault(&sim, DARAN_SIM_FAULT_STALL));
     run_ms(1u);
-    TEST_ASSERT_EQUAL_STRING("65536", say("r axis0.motor.error"));
-    TEST_ASSERT_EQUAL_STRING("64", say("r axis0.error"));
-    TEST_ASSERT_EQUAL_STRING("1", say("r axis0.current_state"));
-    TEST_ASSERT_EQUAL_STRING("error: motor fault", say("q 1 90"));
-    TEST_ASSERT_EQUAL_STRING("", say("sc 1"));
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.error"));
+    TEST_ASSERT_EQUAL_STRING("65536", sim_say("r axis0.motor.error"));
+    TEST_ASSERT_EQUAL_STRING("64", sim_say("r axis0.error"));
+    TEST_ASSERT_EQUAL_STRING("1", sim_say("r axis0.current_state"));
+    TEST_ASSERT_EQUAL_STRING("error: motor fault", sim_say("q 1 90"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sc 1"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.error"));
 }
 
 static void test_an_injected_overspeed_trips_when_the_error_is_enabled(void)
 {
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.controller.config.enable_overspeed_error 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.controller.config.enable_overspeed_error 1"));
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_sim_drive_inject_fault(&sim, DARAN_SIM_FAULT_OVERSPEED));
     run_ms(1u);
-    TEST_ASSERT_EQUAL_STRING("1", say("r axis0.controller.error"));
-    TEST_ASSERT_EQUAL_STRING("512", say("r axis0.error"));
-    TEST_ASSERT_EQUAL_STRING("error: motor fault", say("v 1 10"));
+    TEST_ASSERT_EQUAL_STRING("1", sim_say("r axis0.controller.error"));
+    TEST_ASSERT_EQUAL_STRING("512", sim_say("r axis0.error"));
+    TEST_ASSERT_EQUAL_STRING("error: motor fault", sim_say("v 1 10"));
 }
 
 static void test_an_injected_overspeed_is_braked_back_when_the_error_is_off(void)
@@ -187,8 +149,8 @@ static void test_an_injected_overspeed_is_braked_back_when_the_error_is_off(void
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_sim_drive_inject_fault(&sim, DARAN_SIM_FAULT_OVERSPEED));
     TEST_ASSERT_TRUE(sim.model.vel_rpm > 1.2f * 600.0f); /* thrown beyond the limit */
     run_ms(2000u);
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.error"));
-    TEST_ASSERT_EQUAL_STRING("8", say("r axis0.current_state"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.error"));
+    TEST_ASSERT_EQUAL_STRING("8", sim_say("r axis0.current_state"));
     TEST_ASSERT_TRUE(sim.model.vel_rpm < 600.0f && sim.model.vel_rpm > -600.0f);
 }
 
@@ -196,25 +158,25 @@ static void test_injected_overtemp_and_undervoltage_trip(void)
 {
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_sim_drive_inject_fault(&sim, DARAN_SIM_FAULT_OVERTEMP));
     run_ms(1u);
-    TEST_ASSERT_EQUAL_STRING("262144", say("r axis0.error"));
+    TEST_ASSERT_EQUAL_STRING("262144", sim_say("r axis0.error"));
     daran_sim_drive_init(&sim, 0u, 1000u);
     TEST_ASSERT_EQUAL_INT(DARAN_OK,
                           daran_sim_drive_inject_fault(&sim, DARAN_SIM_FAULT_UNDERVOLTAGE));
     run_ms(1u); /* the bus sags */
-    TEST_ASSERT_EQUAL_STRING("6", say("r vbus_voltage 1"));
+    TEST_ASSERT_EQUAL_STRING("6", sim_say("r vbus_voltage 1"));
     run_ms(1u); /* the protection sees it */
-    TEST_ASSERT_EQUAL_STRING("2", say("r axis0.error"));
+    TEST_ASSERT_EQUAL_STRING("2", sim_say("r axis0.error"));
 }
 
 static void test_an_injected_nvm_corruption_boots_on_defaults_with_a_warning(void)
 {
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.controller.config.pos_gain 30"));
-    TEST_ASSERT_EQUAL_STRING("", say("ss 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.controller.config.pos_gain 30"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("ss 1"));
     TEST_ASSERT_EQUAL_INT(DARAN_OK,
                           daran_sim_drive_inject_fault(&sim, DARAN_SIM_FAULT_NVM_CORRUPT));
-    TEST_ASSERT_EQUAL_STRING("", say("sr 1"));
-    TEST_ASSERT_EQUAL_STRING("20", say("r axis0.controller.config.pos_gain"));
-    TEST_ASSERT_EQUAL_STRING("1", say("r axis0.config_warnings"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sr 1"));
+    TEST_ASSERT_EQUAL_STRING("20", sim_say("r axis0.controller.config.pos_gain"));
+    TEST_ASSERT_EQUAL_STRING("1", sim_say("r axis0.config_warnings"));
 }
 
 static void test_a_fault_outside_the_enum_is_refused(void)
@@ -250,39 +212,39 @@ static void test_a_refused_set_answers_its_result_and_changes_nothing(void)
 {
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_sim_drive_refuse_calls(&sim, DARAN_SIM_CALL_SET, 2u,
                                                                  DARAN_ERR_MOTOR_FAULT));
-    TEST_ASSERT_EQUAL_STRING("error: motor fault", say("w axis0.controller.config.pos_gain 30"));
+    TEST_ASSERT_EQUAL_STRING("error: motor fault", sim_say("w axis0.controller.config.pos_gain 30"));
     TEST_ASSERT_EQUAL_UINT32(1u, daran_sim_drive_refusals_left(&sim, DARAN_SIM_CALL_SET));
-    TEST_ASSERT_EQUAL_STRING("error: motor fault", say("w axis0.controller.config.pos_gain 31"));
-    TEST_ASSERT_EQUAL_STRING("20", say("r axis0.controller.config.pos_gain"));
+    TEST_ASSERT_EQUAL_STRING("error: motor fault", sim_say("w axis0.controller.config.pos_gain 31"));
+    TEST_ASSERT_EQUAL_STRING("20", sim_say("r axis0.controller.config.pos_gain"));
     /* spent: the next write goes through */
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.controller.config.pos_gain 32"));
-    TEST_ASSERT_EQUAL_STRING("32", say("r axis0.controller.config.pos_gain"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.controller.config.pos_gain 32"));
+    TEST_ASSERT_EQUAL_STRING("32", sim_say("r axis0.controller.config.pos_gain"));
 }
 
 static void test_a_refused_move_answers_its_result_and_does_not_move(void)
 {
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_sim_drive_refuse_calls(&sim, DARAN_SIM_CALL_MOVE, 1u,
                                                                  DARAN_ERR_TRAJECTORY_INFEASIBLE));
-    TEST_ASSERT_EQUAL_STRING("error: trajectory infeasible", say("q 1 90"));
+    TEST_ASSERT_EQUAL_STRING("error: trajectory infeasible", sim_say("q 1 90"));
     run_ms(500u);
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.output_shaft.input_pos"));
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.output_shaft.pos_estimate"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.output_shaft.input_pos"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.output_shaft.pos_estimate"));
 }
 
 static void test_a_refused_action_answers_its_result(void)
 {
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_sim_drive_refuse_calls(&sim, DARAN_SIM_CALL_ACTION, 1u,
                                                                  DARAN_ERR_MOTOR_FAULT));
-    TEST_ASSERT_EQUAL_STRING("error: motor fault", say("sz 1"));
-    TEST_ASSERT_EQUAL_STRING("", say("sz 1"));
+    TEST_ASSERT_EQUAL_STRING("error: motor fault", sim_say("sz 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sz 1"));
 }
 
 static void test_a_refused_get_fails_the_read(void)
 {
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_sim_drive_refuse_calls(&sim, DARAN_SIM_CALL_GET, 1u,
                                                                  DARAN_ERR_MOTOR_FAULT));
-    TEST_ASSERT_EQUAL_STRING("error: motor fault", say("r vbus_voltage 1"));
-    TEST_ASSERT_EQUAL_STRING("24", say("r vbus_voltage 1"));
+    TEST_ASSERT_EQUAL_STRING("error: motor fault", sim_say("r vbus_voltage 1"));
+    TEST_ASSERT_EQUAL_STRING("24", sim_say("r vbus_voltage 1"));
 }
 
 static void test_a_refusal_can_be_cancelled(void)
@@ -291,7 +253,7 @@ static void test_a_refusal_can_be_cancelled(void)
                                                                  DARAN_ERR_MOTOR_FAULT));
     daran_sim_drive_clear_injections(&sim);
     TEST_ASSERT_EQUAL_UINT32(0u, daran_sim_drive_refusals_left(&sim, DARAN_SIM_CALL_SET));
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.controller.config.pos_gain 30"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.controller.config.pos_gain 30"));
 }
 
 static void test_a_refusal_needs_a_kind_and_a_protocol_error(void)
@@ -315,31 +277,31 @@ static void test_a_refusal_needs_a_kind_and_a_protocol_error(void)
 
 static void test_a_failing_nvm_write_keeps_the_old_config_after_a_reboot(void)
 {
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.controller.config.pos_gain 30"));
-    TEST_ASSERT_EQUAL_STRING("", say("ss 1"));
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.controller.config.pos_gain 40"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.controller.config.pos_gain 30"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("ss 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.controller.config.pos_gain 40"));
     daran_sim_drive_fail_nvm_saves(&sim, 1u);
-    TEST_ASSERT_EQUAL_STRING("error: motor fault", say("ss 1"));
-    TEST_ASSERT_EQUAL_STRING("", say("sr 1"));
-    TEST_ASSERT_EQUAL_STRING("30", say("r axis0.controller.config.pos_gain"));
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.config_warnings"));
+    TEST_ASSERT_EQUAL_STRING("error: motor fault", sim_say("ss 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sr 1"));
+    TEST_ASSERT_EQUAL_STRING("30", sim_say("r axis0.controller.config.pos_gain"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.config_warnings"));
     /* the failure was for one save: the next one stores */
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.controller.config.pos_gain 40"));
-    TEST_ASSERT_EQUAL_STRING("", say("ss 1"));
-    TEST_ASSERT_EQUAL_STRING("", say("sr 1"));
-    TEST_ASSERT_EQUAL_STRING("40", say("r axis0.controller.config.pos_gain"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.controller.config.pos_gain 40"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("ss 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sr 1"));
+    TEST_ASSERT_EQUAL_STRING("40", sim_say("r axis0.controller.config.pos_gain"));
 }
 
 static void test_a_failing_first_save_leaves_the_store_blank(void)
 {
     uint32_t written = sim.ram.bytes_written;
     daran_sim_drive_fail_nvm_saves(&sim, 1u);
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.controller.config.pos_gain 40"));
-    TEST_ASSERT_EQUAL_STRING("error: motor fault", say("ss 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.controller.config.pos_gain 40"));
+    TEST_ASSERT_EQUAL_STRING("error: motor fault", sim_say("ss 1"));
     TEST_ASSERT_EQUAL_UINT32(written, sim.ram.bytes_written);
-    TEST_ASSERT_EQUAL_STRING("", say("sr 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sr 1"));
     TEST_ASSERT_EQUAL_INT(DARAN_SIM_NVM_BLANK, sim.nvm_status);
-    TEST_ASSERT_EQUAL_STRING("20", say("r axis0.controller.config.pos_gain"));
+    TEST_ASSERT_EQUAL_STRING("20", sim_say("r axis0.controller.config.pos_gain"));
 }
 
 /* ---- the bus ---- */

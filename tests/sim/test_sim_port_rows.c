@@ -14,42 +14,7 @@
 
 #include "brake_port.h"
 #include "daran_sim.h"
-
-static daran_sim_drive_t sim;
-static daran_drive_t drive;
-static char reply[512];
-static size_t reply_len;
-
-static void collect(void *ctx, const char *line, size_t len)
-{
-    (void)ctx;
-    if (len < sizeof reply - reply_len) {
-        memcpy(reply + reply_len, line, len);
-        reply_len += len;
-    }
-    reply[reply_len] = '\0';
-}
-
-void setUp(void)
-{
-    daran_sim_drive_init(&sim, 0u, 1000u);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &daran_sim_hal, &sim, collect, NULL));
-}
-
-void tearDown(void)
-{
-}
-
-static const char *say(const char *line)
-{
-    reply_len = 0u;
-    reply[0] = '\0';
-    (void)daran_process_line(&drive, line, strlen(line));
-    while (reply_len > 0u && (reply[reply_len - 1u] == '\n' || reply[reply_len - 1u] == '\r')) {
-        reply[--reply_len] = '\0';
-    }
-    return reply;
-}
+#include "sim_one_drive.h"
 
 static void test_the_port_rows_follow_the_vendor_rows(void)
 {
@@ -64,25 +29,25 @@ static void test_the_port_rows_follow_the_vendor_rows(void)
 
 static void test_a_port_setting_is_written_and_read_back(void)
 {
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.brake.chopper_hz"));
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.brake.chopper_hz 20000"));
-    TEST_ASSERT_EQUAL_STRING("20000", say("r axis0.brake.chopper_hz"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.brake.chopper_hz"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.brake.chopper_hz 20000"));
+    TEST_ASSERT_EQUAL_STRING("20000", sim_say("r axis0.brake.chopper_hz"));
     /* the core's own range check still applies (>= 0) */
-    TEST_ASSERT_EQUAL_STRING("error: value out of range", say("w axis0.brake.chopper_hz -1"));
+    TEST_ASSERT_EQUAL_STRING("error: value out of range", sim_say("w axis0.brake.chopper_hz -1"));
 }
 
 static void test_a_port_reading_reads_and_refuses_a_write(void)
 {
     daran_value_t v;
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.brake.temperature"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.brake.temperature"));
     v.f32 = 41.5f;
     TEST_ASSERT_EQUAL_INT(DARAN_OK,
                           daran_sim_drive_set_port_value(&sim, DARAN_PROP_BRAKE_TEMPERATURE, v));
-    TEST_ASSERT_EQUAL_STRING("41.5", say("r axis0.brake.temperature"));
-    TEST_ASSERT_EQUAL_STRING("error: read only property", say("w axis0.brake.temperature 3"));
+    TEST_ASSERT_EQUAL_STRING("41.5", sim_say("r axis0.brake.temperature"));
+    TEST_ASSERT_EQUAL_STRING("error: read only property", sim_say("w axis0.brake.temperature 3"));
     /* a reading is state: it stays across a reboot */
-    TEST_ASSERT_EQUAL_STRING("", say("sr 1"));
-    TEST_ASSERT_EQUAL_STRING("41.5", say("r axis0.brake.temperature"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sr 1"));
+    TEST_ASSERT_EQUAL_STRING("41.5", sim_say("r axis0.brake.temperature"));
 }
 
 static void test_set_port_value_takes_only_port_rows_and_good_values(void)
@@ -96,36 +61,36 @@ static void test_set_port_value_takes_only_port_rows_and_good_values(void)
     v.u32 = 0x7FC00000u; /* a NaN */
     TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT,
                           daran_sim_drive_set_port_value(&sim, DARAN_PROP_BRAKE_TEMPERATURE, v));
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.brake.temperature"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.brake.temperature"));
 }
 
 static void test_a_port_setting_is_saved_and_erased_with_the_config(void)
 {
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.brake.chopper_hz 12500"));
-    TEST_ASSERT_EQUAL_STRING("", say("ss 1"));
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.brake.chopper_hz 300"));
-    TEST_ASSERT_EQUAL_STRING("", say("sr 1"));
-    TEST_ASSERT_EQUAL_STRING("12500", say("r axis0.brake.chopper_hz"));
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.config_warnings"));
-    TEST_ASSERT_EQUAL_STRING("", say("se 1"));
-    TEST_ASSERT_EQUAL_STRING("", say("sr 1"));
-    TEST_ASSERT_EQUAL_STRING("0", say("r axis0.brake.chopper_hz"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.brake.chopper_hz 12500"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("ss 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.brake.chopper_hz 300"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sr 1"));
+    TEST_ASSERT_EQUAL_STRING("12500", sim_say("r axis0.brake.chopper_hz"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.config_warnings"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("se 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sr 1"));
+    TEST_ASSERT_EQUAL_STRING("0", sim_say("r axis0.brake.chopper_hz"));
 }
 
 static void test_a_failing_save_keeps_the_stored_port_setting(void)
 {
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.brake.chopper_hz 12500"));
-    TEST_ASSERT_EQUAL_STRING("", say("ss 1"));
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.brake.chopper_hz 300"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.brake.chopper_hz 12500"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("ss 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.brake.chopper_hz 300"));
     daran_sim_drive_fail_nvm_saves(&sim, 1u);
-    TEST_ASSERT_EQUAL_STRING("error: motor fault", say("ss 1"));
-    TEST_ASSERT_EQUAL_STRING("", say("sr 1"));
-    TEST_ASSERT_EQUAL_STRING("12500", say("r axis0.brake.chopper_hz"));
+    TEST_ASSERT_EQUAL_STRING("error: motor fault", sim_say("ss 1"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sr 1"));
+    TEST_ASSERT_EQUAL_STRING("12500", sim_say("r axis0.brake.chopper_hz"));
 }
 
 static void test_omitted_vendor_rows_stay_invalid(void)
 {
-    TEST_ASSERT_EQUAL_STRING("error: invalid property", say("r axis0.encoder.spi_buff_0"));
+    TEST_ASSERT_EQUAL_STRING("error: invalid property", sim_say("r axis0.encoder.spi_buff_0"));
 }
 
 /* An extension serving the brake's temperature from the model's physics:
@@ -149,10 +114,10 @@ static void test_an_extension_serves_a_port_reading_over_the_store(void)
     TEST_ASSERT_EQUAL_INT(DARAN_OK,
                           daran_sim_drive_set_port_value(&sim, DARAN_PROP_BRAKE_TEMPERATURE, v));
     daran_sim_drive_extend(&sim, &temperature_extension, &sim);
-    TEST_ASSERT_EQUAL_STRING("25", say("r axis0.brake.temperature"));
+    TEST_ASSERT_EQUAL_STRING("25", sim_say("r axis0.brake.temperature"));
     /* rows it does not claim still come from the store */
-    TEST_ASSERT_EQUAL_STRING("", say("w axis0.brake.chopper_hz 5"));
-    TEST_ASSERT_EQUAL_STRING("5", say("r axis0.brake.chopper_hz"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("w axis0.brake.chopper_hz 5"));
+    TEST_ASSERT_EQUAL_STRING("5", sim_say("r axis0.brake.chopper_hz"));
 }
 
 /* The port's own command drives the same row: its chopper driver is the
@@ -172,10 +137,10 @@ static void test_the_ports_own_command_drives_the_simulated_row(void)
     chopper.set_frequency = chopper_set_frequency;
     chopper.ctx = &sim;
     TEST_ASSERT_EQUAL_INT(DARAN_OK, brake_port_attach(&drive, &chopper));
-    TEST_ASSERT_EQUAL_STRING("", say("sb 1 20000"));
-    TEST_ASSERT_EQUAL_STRING("20000", say("r axis0.brake.chopper_hz"));
-    TEST_ASSERT_EQUAL_STRING("error: value out of range", say("sb 1 60000"));
-    TEST_ASSERT_EQUAL_STRING("20000", say("r axis0.brake.chopper_hz"));
+    TEST_ASSERT_EQUAL_STRING("", sim_say("sb 1 20000"));
+    TEST_ASSERT_EQUAL_STRING("20000", sim_say("r axis0.brake.chopper_hz"));
+    TEST_ASSERT_EQUAL_STRING("error: value out of range", sim_say("sb 1 60000"));
+    TEST_ASSERT_EQUAL_STRING("20000", sim_say("r axis0.brake.chopper_hz"));
 }
 
 int main(void)
