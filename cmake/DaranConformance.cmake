@@ -12,7 +12,9 @@
 # build: its own rows in, its omitted rows out. CTest runs it as the test
 # <name>; it exits non-zero when a requirement fails and prints each failure
 # with the lines sent, the replies and the HAL calls expected and seen.
-# Headers of the HAL: target_include_directories(<name> PRIVATE ...).
+# Headers of the HAL: target_include_directories(<name> PRIVATE ...). The
+# program (the suite and the HAL sources) is built with ASan + UBSan where the
+# compiler links them; NO_SANITIZERS after the name leaves them out.
 #
 #   daran_ascii_add_conformance_program(<name> LIBRARY <core target> SOURCES ...)
 #
@@ -20,9 +22,10 @@
 # arguments, e.g. --verbose, or under a wrapper of one's own).
 include_guard(GLOBAL)
 include("${CMAKE_CURRENT_LIST_DIR}/DaranTestSupport.cmake")
+include("${CMAKE_CURRENT_LIST_DIR}/DaranFuzzTarget.cmake") # _daran_fuzz_check_flags()
 
 function(daran_ascii_add_conformance_program name)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "LIBRARY" "SOURCES")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "NO_SANITIZERS" "LIBRARY" "SOURCES")
   set(_caller "daran_ascii_add_conformance_test(${name})")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "${_caller}: unexpected arguments '${arg_UNPARSED_ARGUMENTS}' (usage: "
@@ -47,6 +50,18 @@ function(daran_ascii_add_conformance_program name)
     target_link_libraries(${name} PRIVATE m)
   endif()
   target_compile_features(${name} PRIVATE c_std_99)
+  # The HAL under test runs under ASan + UBSan where the compiler links them,
+  # so a HAL that writes out of bounds or overflows fails here too
+  # (NO_SANITIZERS: leave the program's flags as the project has them).
+  if(NOT arg_NO_SANITIZERS AND NOT CMAKE_CROSSCOMPILING)
+    _daran_fuzz_check_flags(DARAN_FUZZ_HAVE_SANITIZERS "int main(void) { return 0; }"
+                            -fsanitize=address,undefined)
+    if(DARAN_FUZZ_HAVE_SANITIZERS)
+      set(_sanitize -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+      target_compile_options(${name} PRIVATE ${_sanitize})
+      target_link_options(${name} PRIVATE ${_sanitize})
+    endif()
+  endif()
 endfunction()
 
 function(daran_ascii_add_conformance_test name)

@@ -200,6 +200,9 @@ function(daran_ascii_add_fuzz_target name)
 
   # The libFuzzer harness: clang only.
   if(NOT CMAKE_C_COMPILER_ID MATCHES "Clang")
+    message(STATUS "daran_ascii_add_fuzz_target(${name}): ${CMAKE_C_COMPILER_ID} is not clang: "
+                   "only ${name}_replay is built (configure a build folder with "
+                   "-DCMAKE_C_COMPILER=clang-14 for the libFuzzer harness ${name} and ${name}_run)")
     return()
   endif()
   _daran_fuzz_check_flags(DARAN_FUZZ_HAVE_LIBFUZZER

@@ -406,6 +406,64 @@ static float member_of(const daran_move_t *move, enum member from)
     }
 }
 
+/* The settings a filtered or trapezoid move carries only when its given bit
+ * is set; without it the drive keeps its current one (porting.md section 3,
+ * daran_hal.h). Each is first written with a marker value the drive is
+ * unlikely to hold, so a HAL that overwrites it (with 0, or a default) is
+ * seen. */
+static const struct {
+    daran_move_kind_t kind;
+    daran_prop_t prop;
+    uint8_t given;
+    const char *marker;
+} kept_settings[] = {
+    {DARAN_MOVE_FILTERED_POSITION, DARAN_PROP_INPUT_FILTER_BANDWIDTH, DARAN_GIVEN_RATE, "37.25"},
+    {DARAN_MOVE_TRAPEZOID, DARAN_PROP_TRAP_TRAJ_VEL_LIMIT, DARAN_GIVEN_VEL, "37.25"},
+    {DARAN_MOVE_TRAPEZOID, DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT, DARAN_GIVEN_RATE, "13.5"},
+    {DARAN_MOVE_TRAPEZOID, DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT, DARAN_GIVEN_RATE, "13.5"},
+};
+
+/* Before the move: write the markers of the settings row @p m leaves to the
+ * drive; true for each one written and read back (@p armed). */
+static void arm_kept_settings(const conf_motion_t *m, bool armed[])
+{
+    for (size_t k = 0; k < sizeof kept_settings / sizeof kept_settings[0]; k++) {
+        armed[k] = false;
+        daran_prop_t prop = kept_settings[k].prop;
+        if (m->multi || m->kind != kept_settings[k].kind || (m->given & kept_settings[k].given) != 0u ||
+            !conf_in_build(prop) || conf_props[prop].read_refused) {
+            continue;
+        }
+        char line[192];
+        daran_value_t got;
+        daran_value_t want;
+        conf_write_line(prop, CONF_ID, kept_settings[k].marker, line, sizeof line);
+        conf_send(line);
+        armed[k] = conf_reply_len() == 0u && conf_value_of_text(DARAN_TYPE_F32, kept_settings[k].marker, &want) &&
+                   conf_read_value(prop, CONF_ID, &got, true) &&
+                   conf_same_value(DARAN_TYPE_F32, got, want);
+    }
+}
+
+/* After the move: every armed marker still reads back. */
+static void check_kept_settings(const bool armed[])
+{
+    for (size_t k = 0; k < sizeof kept_settings / sizeof kept_settings[0]; k++) {
+        daran_value_t got;
+        daran_value_t want;
+        if (!armed[k] || !conf_value_of_text(DARAN_TYPE_F32, kept_settings[k].marker, &want) ||
+            !conf_read_value(kept_settings[k].prop, CONF_ID, &got, false) ||
+            conf_same_value(DARAN_TYPE_F32, got, want)) {
+            continue;
+        }
+        char path[128];
+        conf_wire_path(kept_settings[k].prop, CONF_ID, path, sizeof path);
+        conf_fail("%s to keep %s: the line did not carry it, so the drive keeps its current "
+                  "setting (docs/porting.md section 3, move: `given`), not %.9g",
+                  path, kept_settings[k].marker, (double)got.f32);
+    }
+}
+
 static void check_motion(void)
 {
     for (size_t i = 0; i < sizeof motions / sizeof motions[0]; i++) {
@@ -430,6 +488,8 @@ static void check_motion(void)
             conf_end();
             continue;
         }
+        bool armed[sizeof kept_settings / sizeof kept_settings[0]];
+        arm_kept_settings(m, armed);
         const daran_move_t *move = run_motion(m, false);
         daran_move_t kept;
         if (move != NULL) {
@@ -451,6 +511,7 @@ static void check_motion(void)
                               "not %.9g", path, (double)want.f32, (double)got.f32);
                 }
             }
+            check_kept_settings(armed);
         }
         conf_end();
     }

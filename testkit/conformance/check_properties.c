@@ -7,6 +7,10 @@
 
 #include "conformance.h"
 
+/* The vendor's rows come first; a port's own rows follow (daran_properties.h). */
+#define CONF_COUNT_ROW_(id, path, scope, type, access, range, unit) +1u
+#define VENDOR_ROWS ((size_t)(0u DARAN_PROPERTY_LIST(CONF_COUNT_ROW_)))
+
 static const char *line_end(void)
 {
     return DARAN_REPLY_CRLF ? "\r\n" : "\n";
@@ -118,6 +122,10 @@ static void check_read(daran_prop_t prop)
             p->read_refused = true;
             conf_note("%s: the HAL does not keep this error register (invalid property; e reads it 0)",
                       path);
+        } else if (get->result == DARAN_ERR_INVALID_PROPERTY && (size_t)prop >= VENDOR_ROWS) {
+            conf_fail("a value: the build lists %s, one of the port's own rows, but the HAL's "
+                      "get answers invalid property (serve it, or take it out of "
+                      "DARAN_PORT_PROPERTY_LIST)", path);
         } else if (get->result == DARAN_ERR_INVALID_PROPERTY) {
             conf_fail("a value: the build lists %s, but the HAL's get answers invalid property "
                       "(leave the row out of the build instead: DARAN_OMIT_PROPERTIES or "
@@ -499,7 +507,8 @@ void conf_check_properties(void)
             }
         }
     }
-    conf_note("properties: %lu in this build, %lu of the lists left out of it",
+    conf_note("properties: %lu in this build (the vendor's and the port's own rows), %lu left "
+              "out of it (DARAN_OMIT_PROPERTIES, DARAN_PROPERTY_OMIT)",
               (unsigned long)in_build, (unsigned long)left_out);
 #if DARAN_ENABLE_HELP
     check_discovery();

@@ -8,13 +8,15 @@
  *   3  an ss that reports success without saving
  *   4  an st that reports success and keeps the motor running
  *   5  a velocity move that never reaches input_vel
- *   6  a node id that is stored but never answered to (the getter keeps 1) */
+ *   6  a node id that is stored but never answered to (the getter keeps 1)
+ *   7  a trapezoid that overwrites the cruise velocity the line did not give
+ *      (found by a first adopter's trial: `given` ignored) */
 #include "daran_test_port.h"
 
 #include "minimal_hal.h"
 
 #ifndef BROKEN_HAL
-#error "BROKEN_HAL selects the breach (1..6)"
+#error "BROKEN_HAL selects the breach (1..7)"
 #endif
 
 static minimal_drive_t axis;
@@ -43,6 +45,9 @@ static daran_result_t broken_move(void *ctx, const daran_move_t *move)
 {
     if (BROKEN_HAL == 5 && (move->kind == DARAN_MOVE_VELOCITY || move->kind == DARAN_MOVE_VELOCITY_RAMP)) {
         return DARAN_OK;
+    }
+    if (BROKEN_HAL == 7 && move->kind == DARAN_MOVE_TRAPEZOID) {
+        ((minimal_drive_t *)ctx)->props[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 = move->vel_rpm;
     }
     return minimal_hal.move(ctx, move);
 }
