@@ -414,6 +414,28 @@ static void test_args_parsers_refuse_an_index_past_the_values(void)
     }
 }
 
+static uint32_t u32_seen;
+
+static daran_result_t u32_handler(daran_drive_t *drive, const daran_args_t *args, void *ctx)
+{
+    (void)drive;
+    (void)ctx;
+    return daran_args_u32(args, 0, &u32_seen);
+}
+
+static void test_args_u32_takes_every_u32_up_to_its_largest(void)
+{
+    static const daran_port_command_t probe[] = {{"pu", 1, 1, 0, u32_handler, "n"}};
+    mock_t *m = mock_new();
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, probe, 1, NULL));
+    ASSERT_SILENT(m, "pu 1 4294967295");
+    TEST_ASSERT_EQUAL_UINT32(UINT32_MAX, u32_seen);
+    ASSERT_SILENT(m, "pu 1 0");
+    TEST_ASSERT_EQUAL_UINT32(0, u32_seen);
+    ASSERT_ERROR(m, "pu 1 4294967296", "value out of range");
+    TEST_ASSERT_EQUAL_UINT32(0, u32_seen); /* a refused value is not stored */
+}
+
 /* ---- telemetry ---- */
 
 static mock_t *telemetry_mock(float period, uint32_t fields)
@@ -455,6 +477,19 @@ static void test_a_report_has_the_id_the_time_and_the_fields_in_bit_order_with_a
     m->props[DARAN_PROP_TELEMETRY_FIELDS].u32 = 0; /* no field: the time alone */
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_telemetry_tick(&m->drive, 1520, 1000));
     ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "@1 1.52", true));
+    ASSERT_NO_EFFECT(m);
+}
+
+static void test_a_report_ignores_field_bits_past_the_ninth_a_hal_returns(void)
+{
+    /* the range 0..511 keeps them out of `w`; a HAL's own value may have them */
+    mock_t *m = telemetry_mock(0.01f, 0xFFFFFE01u);
+    char want[256];
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_telemetry_tick(&m->drive, 1500, 1000));
+    ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "@1 1.5 12.5", true));
+    m->props[DARAN_PROP_TELEMETRY_FIELDS].u32 = 0x200; /* the tenth bit alone: the time alone */
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_telemetry_tick(&m->drive, 1510, 1000));
+    ASSERT_REPLY(m, mock_reply_line(want, sizeof want, "@1 1.51", true));
     ASSERT_NO_EFFECT(m);
 }
 
@@ -559,8 +594,10 @@ int main(void)
 #endif
     RUN_TEST(test_a_bad_port_table_is_refused_whole_and_the_drive_keeps_its_own);
     RUN_TEST(test_args_parsers_refuse_an_index_past_the_values);
+    RUN_TEST(test_args_u32_takes_every_u32_up_to_its_largest);
     RUN_TEST(test_telemetry_is_off_by_default_and_costs_one_get_per_tick);
     RUN_TEST(test_a_report_has_the_id_the_time_and_the_fields_in_bit_order_with_a_checksum);
+    RUN_TEST(test_a_report_ignores_field_bits_past_the_ninth_a_hal_returns);
     RUN_TEST(test_reports_come_every_period_rounded_to_whole_ticks);
     RUN_TEST(test_switching_telemetry_on_reports_at_the_next_tick);
     RUN_TEST(test_the_first_tick_reports_whatever_the_tick_count);

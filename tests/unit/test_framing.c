@@ -464,6 +464,24 @@ static void test_process_line_between_the_bytes_of_a_line_never_runs_its_rest(vo
     ASSERT_REPLY(m, "0 0\n");
 }
 
+static void test_process_line_after_a_pending_line_that_ends_in_a_blank_never_runs_its_rest(void)
+{
+    /* D38 again, the pending line "f " ending between fields (it has bytes,
+     * no flag): its rest "1" must not become the line "1" nor join "f " */
+    mock_t *m = mock_new();
+    mock_clear(m);
+    (void)daran_rx_write(&m->drive, "f ", 2);
+    (void)daran_poll(&m->drive);
+    ASSERT_REPLY(m, "");
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 1", 3));
+    ASSERT_REPLY(m, "0 0\n");
+    (void)daran_rx_write(&m->drive, "f 1\n", 4);
+    (void)daran_poll(&m->drive);
+    ASSERT_REPLY(m, "error: line too long\n");
+    mock_send_line(m, "f 1");
+    ASSERT_REPLY(m, "0 0\n");
+}
+
 static void test_process_line_returns_the_error_it_answered(void)
 {
     mock_t *m = mock_new();
@@ -522,6 +540,7 @@ int main(void)
     ADD(test_rx_byte_accepts_until_the_ring_is_full);
     ADD(test_rx_dropped_starts_at_zero);
     ADD(test_process_line_runs_a_framed_line);
+    ADD(test_process_line_after_a_pending_line_that_ends_in_a_blank_never_runs_its_rest);
     ADD(test_process_line_returns_the_error_it_answered);
     ADD(test_process_line_between_the_bytes_of_a_line_never_runs_its_rest);
     mock_suite_run(&s);
