@@ -1,7 +1,8 @@
-/* Lock-step test mode of the example firmware (daran-fw-lockstep.elf only):
- * time stands still unless the test driver says, as in daran-sim, so that
- * the firmware's replies to a transcript can be compared byte for byte with
- * the host simulator's.
+/* Lock-step test harness of the example firmware: daran-fw-lockstep.elf is
+ * main.c (the board's firmware, unchanged) plus this file, an add-on through
+ * fw.h's door. Time stands still unless the test driver says, as in
+ * daran-sim, so that the firmware's replies to a transcript can be compared
+ * byte for byte with the host simulator's.
  *
  * The test driver (tests/target/run_transcript.py) sends the transcript's
  * protocol lines unchanged and turns each daran-sim directive into one of
@@ -17,10 +18,12 @@
  *   !l ID BITS      external load torque, float32 bits in hex
  *   !x              finish: answer nothing more and exit QEMU (status 0)
  *
- * The RX ISR spots a '!' at the start of a line, keeps the line here and
- * masks its own interrupt until the main loop has processed every byte
+ * The firmware's RX ISR hands every byte to lockstep_take() first, which
+ * spots a '!' at the start of a line, keeps the line here and masks the RX
+ * interrupt until the main loop (lockstep_run()) has processed every byte
  * queued before the directive and run it: the UART keeps the next byte
- * (QEMU holds the rest), so order is kept exactly. */
+ * (QEMU holds the rest), so order is kept exactly. The drive is reached only
+ * through the pointer the firmware passes. */
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -35,8 +38,9 @@ static char directive[DIRECTIVE_MAX];
 static uint32_t directive_len;
 static volatile bool directive_ready;
 
-bool daran_fw_lockstep_take(uint8_t byte)
+static bool lockstep_take(daran_fw_t *fw, uint8_t byte)
 {
+    (void)fw;
     if (at_line_start && byte == (uint8_t)'!') {
         in_directive = true;
         directive_len = 0u;
@@ -83,12 +87,12 @@ static uint32_t parse_uint(const char **p, const char *end, uint32_t base)
     return v;
 }
 
-static bool addressed_here(uint32_t id)
+static bool addressed_here(const daran_fw_t *fw, uint32_t id)
 {
-    return id == 0u || id == daran_sim_drive_id(&daran_fw_plant);
+    return id == 0u || id == daran_sim_drive_id(&fw->plant);
 }
 
-static void run_directive(const char *p, const char *end)
+static void run_directive(daran_fw_t *fw, const char *p, const char *end)
 {
     char op;
     uint32_t id;
@@ -102,39 +106,39 @@ static void run_directive(const char *p, const char *end)
     case 't': {
         uint32_t n = parse_uint(&p, end, 10u);
         while (n-- > 0u) {
-            daran_sim_model_tick(&daran_fw_plant.model);
+            daran_sim_model_tick(&fw->plant.model);
         }
         break;
     }
     case 'h': {
         uint32_t hz = parse_uint(&p, end, 10u);
         if (hz > 0u) {
-            daran_sim_drive_init(&daran_fw_plant, 0u, hz);
-            daran_fw_start_drive();
+            daran_sim_drive_init(&fw->plant, 0u, hz);
+            daran_fw_start_drive(fw);
         }
         break;
     }
     case 'p':
         id = parse_uint(&p, end, 10u);
-        if (addressed_here(id)) {
-            daran_sim_drive_power_on(&daran_fw_plant);
-            daran_fw_start_drive();
+        if (addressed_here(fw, id)) {
+            daran_sim_drive_power_on(&fw->plant);
+            daran_fw_start_drive(fw);
         }
         break;
     case 'f':
         id = parse_uint(&p, end, 10u);
         p = skip_blanks(p, end);
-        if (addressed_here(id) && p < end) {
+        if (addressed_here(fw, id) && p < end) {
             if (*p == 'o') {
-                daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_OVERTEMP);
+                daran_sim_model_fault(&fw->plant.model, DARAN_SIM_FAULT_OVERTEMP);
             } else if (*p == 'u') {
-                daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_UNDERVOLTAGE);
+                daran_sim_model_fault(&fw->plant.model, DARAN_SIM_FAULT_UNDERVOLTAGE);
             } else if (*p == 's') {
-                daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_STALL);
+                daran_sim_model_fault(&fw->plant.model, DARAN_SIM_FAULT_STALL);
             } else if (*p == 'v') {
-                daran_sim_model_fault(&daran_fw_plant.model, DARAN_SIM_FAULT_OVERSPEED);
+                daran_sim_model_fault(&fw->plant.model, DARAN_SIM_FAULT_OVERSPEED);
             } else if (*p == 'n') {
-                (void)daran_sim_drive_corrupt_nvm(&daran_fw_plant);
+                (void)daran_sim_drive_corrupt_nvm(&fw->plant);
             }
         }
         break;
@@ -146,8 +150,8 @@ static void run_directive(const char *p, const char *end)
         id = parse_uint(&p, end, 10u);
         p = skip_blanks(p, end);
         load.u = parse_uint(&p, end, 16u);
-        if (addressed_here(id)) {
-            daran_fw_plant.model.ext_torque_nm = load.f;
+        if (addressed_here(fw, id)) {
+            fw->plant.model.ext_torque_nm = load.f;
         }
         break;
     }
@@ -158,20 +162,34 @@ static void run_directive(const char *p, const char *end)
     }
 }
 
-bool daran_fw_rx_held_by_directive(void)
+static bool lockstep_rx_held(daran_fw_t *fw)
 {
+    (void)fw;
     return directive_ready;
 }
 
-bool daran_fw_lockstep_run(void)
+static bool lockstep_run(daran_fw_t *fw)
 {
     if (!directive_ready) {
         return false;
     }
     /* Lines that arrived before the directive come first. */
-    (void)daran_poll(&daran_fw_drive);
-    run_directive(directive, directive + directive_len);
+    (void)daran_poll(&fw->drive);
+    run_directive(fw, directive, directive + directive_len);
     directive_ready = false;
     daran_board_uart0_rx_irq_enable(true);
     return true;
+}
+
+static const daran_fw_addon_t lockstep = {
+    true, /* no SysTick: time moves by `!t` only */
+    lockstep_take,
+    lockstep_rx_held,
+    lockstep_run,
+};
+
+/* Replaces main.c's weak default: this image runs with the harness. */
+const daran_fw_addon_t *daran_fw_addon(void)
+{
+    return &lockstep;
 }

@@ -7,9 +7,12 @@
  *   daran_poll() --replies----> polled UART0 TX
  *   SysTick ------------------> one model tick per period, run by the loop
  *
- * Built twice: daran-fw.elf runs in real time; daran-fw-lockstep.elf (the
- * transcript tests) has no SysTick and takes `!` directive lines from the
- * UART instead (lockstep.c), so that time only moves when the test says. */
+ * This file is the board's firmware, whole: daran-fw.elf is this file and
+ * the board services. It knows one door for code linked beside it (fw.h's
+ * daran_fw_addon(), NULL here): the lock-step test image daran-fw-lockstep.elf
+ * is this file plus lockstep.c, an add-on that takes `!` directive lines off
+ * the UART and moves time itself, so that time only moves when the test
+ * says. */
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -26,8 +29,11 @@
 #define DARAN_FW_BAUD 115200u
 #endif
 
-daran_sim_drive_t daran_fw_plant;
-daran_drive_t daran_fw_drive;
+/* The drive: plant and protocol instance, reached only through this file
+ * (and through the pointer it hands an add-on). */
+static daran_fw_t fw;
+/* The image's add-on or NULL; set before the RX interrupt is enabled. */
+static const daran_fw_addon_t *addon;
 
 /* SysTick counts periods; the main loop runs the model for each. Two
  * counters with one writer each need no lock. */
@@ -56,11 +62,10 @@ static void reply_to_uart(void *ctx, const char *line, size_t len)
     daran_board_uart0_write(line, len);
 }
 
-void daran_fw_start_drive(void)
+void daran_fw_start_drive(daran_fw_t *d)
 {
     /* Fails only for a NULL pointer or HAL member: a build error, really. */
-    if (daran_init(&daran_fw_drive, &daran_sim_hal, &daran_fw_plant, reply_to_uart, NULL) !=
-        DARAN_OK) {
+    if (daran_init(&d->drive, &daran_sim_hal, &d->plant, reply_to_uart, NULL) != DARAN_OK) {
         daran_board_fatal(5);
     }
 }
@@ -75,14 +80,12 @@ void daran_fw_uart0_rx_isr(void)
         return;
     }
     byte = daran_board_uart0_take_rx();
-#if DARAN_FW_LOCKSTEP
-    if (daran_fw_lockstep_take(byte)) {
+    if (addon != NULL && addon->rx_take(&fw, byte)) {
         return;
     }
-#endif
     /* Cannot fail with the flow control above; without it a full ring
      * loses the byte and the core answers that line `line too long` (D3). */
-    (void)daran_rx_byte(&daran_fw_drive, byte);
+    (void)daran_rx_byte(&fw.drive, byte);
     rx_queued = rx_queued + 1u;
 }
 
@@ -92,10 +95,10 @@ static bool poll_drive(void)
     uint32_t queued_before = rx_queued;
     size_t lines;
     rx_seen = false;
-    lines = daran_poll(&daran_fw_drive);
+    lines = daran_poll(&fw.drive);
     /* daran_poll() drains every byte that was queued when it started. */
     rx_drained = queued_before;
-    if (rx_paused && !daran_fw_rx_held_by_directive()) {
+    if (rx_paused && (addon == NULL || !addon->rx_held(&fw))) {
         rx_paused = false;
         daran_board_uart0_rx_irq_enable(true);
     }
@@ -111,27 +114,34 @@ static bool run_due_ticks(void)
 {
     bool ran = false;
     while (ticks_run != ticks_raised) {
-        daran_sim_model_tick(&daran_fw_plant.model);
+        daran_sim_model_tick(&fw.plant.model);
         ticks_run++;
         ran = true;
     }
     return ran;
 }
 
+/* No add-on: the firmware alone. An image with one defines this again. */
+__attribute__((weak)) const daran_fw_addon_t *daran_fw_addon(void)
+{
+    return NULL;
+}
+
 int main(void)
 {
-    daran_sim_drive_init(&daran_fw_plant, 0u, DARAN_FW_TICK_HZ);
-    daran_fw_start_drive();
+    addon = daran_fw_addon();
+    daran_sim_drive_init(&fw.plant, 0u, DARAN_FW_TICK_HZ);
+    daran_fw_start_drive(&fw);
     daran_board_uart0_init(DARAN_FW_BAUD);
-#if !DARAN_FW_LOCKSTEP
-    daran_board_systick_start(DARAN_FW_TICK_HZ);
-#endif
+    if (addon == NULL || !addon->moves_time) {
+        daran_board_systick_start(DARAN_FW_TICK_HZ);
+    }
     for (;;) {
         bool busy = run_due_ticks();
         busy = poll_drive() || busy;
-#if DARAN_FW_LOCKSTEP
-        busy = daran_fw_lockstep_run() || busy;
-#endif
+        if (addon != NULL) {
+            busy = addon->run(&fw) || busy;
+        }
         if (!busy) {
             /* Sleep until the next byte or tick. Interrupts are masked
              * around the last check so none slips in between it and the
