@@ -114,6 +114,14 @@ void daran_recorder_write(void *ctx, const char *line, size_t len);
 void daran_recorder_fail(daran_recorder_t *rec, unsigned mask, unsigned nth,
                          daran_result_t result, int prop);
 
+/** What the store double does with a move, for a double of one's own: the
+ * targets into the `output_shaft.input_*` rows and a given bandwidth,
+ * cruise, acceleration or ramp rate into its setting (docs/porting.md
+ * section 3). DARAN_ERR_INVALID_MODE, @p store unchanged, for a kind outside
+ * the enum. */
+daran_result_t daran_recorder_apply_move(daran_value_t store[DARAN_PROP_COUNT],
+                                         const daran_move_t *move);
+
 /** SET, MOVE and ACTION calls since the last clear. */
 size_t daran_recorder_mutations(const daran_recorder_t *rec);
 /** True when no SET, MOVE or ACTION call was made since the last clear. */

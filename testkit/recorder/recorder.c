@@ -97,9 +97,10 @@ static void store_set(daran_recorder_t *rec, daran_prop_t prop, daran_value_t va
 
 /* What docs/porting.md section 3 asks of move(): the targets in input_*,
  * each given rate, cruise or acceleration in its property. */
-static daran_result_t store_move(daran_recorder_t *rec, const daran_move_t *move)
+daran_result_t daran_recorder_apply_move(daran_value_t store[DARAN_PROP_COUNT],
+                                         const daran_move_t *move)
 {
-    daran_value_t *p = rec->store;
+    daran_value_t *p = store;
     switch (move->kind) {
     case DARAN_MOVE_FILTERED_POSITION:
         p[DARAN_PROP_INPUT_POS].f32 = move->pos_deg;
@@ -239,7 +240,7 @@ static daran_result_t recorder_move(void *ctx, const daran_move_t *move)
     } else if (rec->inner != NULL) {
         record.result = rec->inner->move(rec->inner_ctx, move);
     } else {
-        record.result = store_move(rec, move);
+        record.result = daran_recorder_apply_move(rec->store, move);
     }
     finish(rec, &record);
     return record.result;

@@ -147,51 +147,13 @@ static daran_result_t mock_store_move(void *ctx, const daran_move_t *mv)
     TEST_ASSERT_NOT_NULL(mv);
     if (!m->react)
         return DARAN_OK;
-    daran_value_t *p = m->props;
-    switch (mv->kind) {
-    case DARAN_MOVE_FILTERED_POSITION:
-        if (mv->given & DARAN_GIVEN_RATE)
-            p[DARAN_PROP_INPUT_FILTER_BANDWIDTH].f32 = mv->rate;
-        p[DARAN_PROP_INPUT_POS].f32 = mv->pos_deg;
-        p[DARAN_PROP_POS_SETPOINT].f32 = mv->pos_deg;
-        break;
-    case DARAN_MOVE_TRAPEZOID:
-        /* daran_hal.h: a given cruise and acceleration become the trap_traj settings */
-        if (mv->given & DARAN_GIVEN_VEL)
-            p[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 = mv->vel_rpm;
-        if (mv->given & DARAN_GIVEN_RATE) {
-            p[DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT].f32 = mv->rate;
-            p[DARAN_PROP_TRAP_TRAJ_DECEL_LIMIT].f32 = mv->rate;
-        }
+    if (daran_recorder_apply_move(m->props, mv) != DARAN_OK) {
+        TEST_FAIL_MESSAGE_F("move kind %d outside the enum", (int)mv->kind);
+    }
+    if (mv->kind == DARAN_MOVE_FILTERED_POSITION || mv->kind == DARAN_MOVE_TRAPEZOID ||
+        mv->kind == DARAN_MOVE_PASSTHROUGH) {
         /* The mock "arrives" at once so relative starts are predictable. */
-        p[DARAN_PROP_INPUT_POS].f32 = mv->pos_deg;
-        p[DARAN_PROP_POS_SETPOINT].f32 = mv->pos_deg;
-        break;
-    case DARAN_MOVE_PASSTHROUGH:
-        p[DARAN_PROP_INPUT_POS].f32 = mv->pos_deg;
-        p[DARAN_PROP_POS_SETPOINT].f32 = mv->pos_deg;
-        p[DARAN_PROP_INPUT_VEL].f32 = mv->vel_rpm;
-        p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm;
-        break;
-    case DARAN_MOVE_VELOCITY:
-        p[DARAN_PROP_INPUT_VEL].f32 = mv->vel_rpm;
-        p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm;
-        break;
-    case DARAN_MOVE_VELOCITY_RAMP:
-        p[DARAN_PROP_INPUT_VEL].f32 = mv->vel_rpm;
-        p[DARAN_PROP_VEL_RAMP_RATE].f32 = mv->rate;
-        break;
-    case DARAN_MOVE_TORQUE: p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm; break;
-    case DARAN_MOVE_TORQUE_RAMP:
-        p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm;
-        p[DARAN_PROP_TORQUE_RAMP_RATE].f32 = mv->rate;
-        break;
-    case DARAN_MOVE_IMPEDANCE:
-        p[DARAN_PROP_INPUT_POS].f32 = mv->pos_deg;
-        p[DARAN_PROP_INPUT_VEL].f32 = mv->vel_rpm;
-        p[DARAN_PROP_INPUT_TORQUE].f32 = mv->torque_nm;
-        break;
-    default: TEST_FAIL_MESSAGE_F("move kind %d outside the enum", (int)mv->kind);
+        m->props[DARAN_PROP_POS_SETPOINT].f32 = mv->pos_deg;
     }
     return DARAN_OK;
 }
