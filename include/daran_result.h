@@ -22,29 +22,64 @@ extern "C" {
 #define DARAN_NODISCARD
 #endif
 
-/** DARAN_OK, or the error a request is answered with (its phrase in the comment). */
+/** Every result with its phrase: X(NAME, "phrase") gives DARAN_<NAME>, in
+ * this order, and daran_result_phrase()'s text, so the two cannot drift
+ * apart. The phrases are the protocol's error replies (`error: <phrase>`),
+ * except the last two, which report misuse of the API and are never sent:
+ *
+ * | result | phrase |
+ * |---|---|
+ * | DARAN_OK | ok (success) |
+ * | DARAN_ERR_UNKNOWN_COMMAND | unknown command |
+ * | DARAN_ERR_INVALID_FORMAT | invalid command format |
+ * | DARAN_ERR_INVALID_MOTOR | invalid motor |
+ * | DARAN_ERR_INVALID_VALUE | invalid value |
+ * | DARAN_ERR_OUT_OF_RANGE | value out of range |
+ * | DARAN_ERR_INVALID_MODE | invalid mode |
+ * | DARAN_ERR_INVALID_PROPERTY | invalid property |
+ * | DARAN_ERR_READ_ONLY | read only property |
+ * | DARAN_ERR_INVALID_CHECKSUM | invalid checksum |
+ * | DARAN_ERR_CHECKSUM_MISMATCH | checksum mismatch |
+ * | DARAN_ERR_LINE_TOO_LONG | line too long |
+ * | DARAN_ERR_INVALID_CHARACTER | invalid character |
+ * | DARAN_ERR_NO_PRESET | no preset |
+ * | DARAN_ERR_TRAJECTORY_INFEASIBLE | trajectory infeasible |
+ * | DARAN_ERR_ESTOP_ACTIVE | estop active |
+ * | DARAN_ERR_MOTOR_FAULT | motor fault |
+ * | DARAN_ERR_MOTOR_IDLE | motor idle |
+ * | DARAN_ERR_BAD_ARGUMENT | bad argument: a NULL pointer or a bad table given to the API |
+ * | DARAN_ERR_BUILD_MISMATCH | build mismatch: daran_init() of a program built with another options header |
+ */
+#define DARAN_RESULT_LIST(X) \
+    X(OK,                        "ok") \
+    X(ERR_UNKNOWN_COMMAND,       "unknown command") \
+    X(ERR_INVALID_FORMAT,        "invalid command format") \
+    X(ERR_INVALID_MOTOR,         "invalid motor") \
+    X(ERR_INVALID_VALUE,         "invalid value") \
+    X(ERR_OUT_OF_RANGE,          "value out of range") \
+    X(ERR_INVALID_MODE,          "invalid mode") \
+    X(ERR_INVALID_PROPERTY,      "invalid property") \
+    X(ERR_READ_ONLY,             "read only property") \
+    X(ERR_INVALID_CHECKSUM,      "invalid checksum") \
+    X(ERR_CHECKSUM_MISMATCH,     "checksum mismatch") \
+    X(ERR_LINE_TOO_LONG,         "line too long") \
+    X(ERR_INVALID_CHARACTER,     "invalid character") \
+    X(ERR_NO_PRESET,             "no preset") \
+    X(ERR_TRAJECTORY_INFEASIBLE, "trajectory infeasible") \
+    X(ERR_ESTOP_ACTIVE,          "estop active") \
+    X(ERR_MOTOR_FAULT,           "motor fault") \
+    X(ERR_MOTOR_IDLE,            "motor idle") \
+    X(ERR_BAD_ARGUMENT,          "bad argument") \
+    X(ERR_BUILD_MISMATCH,        "build mismatch")
+
+/** DARAN_OK, or the error a request is answered with (DARAN_RESULT_LIST). */
 typedef enum daran_result {
-    DARAN_OK = 0,                    /**< success */
-    DARAN_ERR_UNKNOWN_COMMAND,       /**< "unknown command" */
-    DARAN_ERR_INVALID_FORMAT,        /**< "invalid command format" */
-    DARAN_ERR_INVALID_MOTOR,         /**< "invalid motor" */
-    DARAN_ERR_INVALID_VALUE,         /**< "invalid value" */
-    DARAN_ERR_OUT_OF_RANGE,          /**< "value out of range" */
-    DARAN_ERR_INVALID_MODE,          /**< "invalid mode" */
-    DARAN_ERR_INVALID_PROPERTY,      /**< "invalid property" */
-    DARAN_ERR_READ_ONLY,             /**< "read only property" */
-    DARAN_ERR_INVALID_CHECKSUM,      /**< "invalid checksum" */
-    DARAN_ERR_CHECKSUM_MISMATCH,     /**< "checksum mismatch" */
-    DARAN_ERR_LINE_TOO_LONG,         /**< "line too long" */
-    DARAN_ERR_INVALID_CHARACTER,     /**< "invalid character" */
-    DARAN_ERR_NO_PRESET,             /**< "no preset" */
-    DARAN_ERR_TRAJECTORY_INFEASIBLE, /**< "trajectory infeasible" */
-    DARAN_ERR_ESTOP_ACTIVE,          /**< "estop active" */
-    DARAN_ERR_MOTOR_FAULT,           /**< "motor fault" */
-    DARAN_ERR_MOTOR_IDLE,            /**< "motor idle" */
-    DARAN_ERR_BAD_ARGUMENT,          /**< API misuse; never sent on the link */
-    DARAN_ERR_BUILD_MISMATCH,        /**< daran_init(): the program and the library were built with other options; never sent on the link */
-    DARAN_RESULT_COUNT               /**< how many results there are; not a result */
+/** @cond INTERNAL */
+#define DARAN_RESULT_ENUM_(name, phrase) DARAN_##name,
+    DARAN_RESULT_LIST(DARAN_RESULT_ENUM_)
+#undef DARAN_RESULT_ENUM_
+/** @endcond */
+    DARAN_RESULT_COUNT /**< how many results there are; not a result */
 } daran_result_t;
 
 /** The error phrase of a result ("unknown command"), without "error: ".

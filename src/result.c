@@ -1,28 +1,13 @@
 /* The error phrases of the protocol, one per daran_result_t, kept as one
- * block of NUL-separated strings in enum order (no table of pointers). */
+ * block of NUL-separated strings in enum order (no table of pointers), both
+ * made from DARAN_RESULT_LIST. */
 #include "internal.h"
 
-static const char phrases[] =
-    "ok\0"
-    "unknown command\0"
-    "invalid command format\0"
-    "invalid motor\0"
-    "invalid value\0"
-    "value out of range\0"
-    "invalid mode\0"
-    "invalid property\0"
-    "read only property\0"
-    "invalid checksum\0"
-    "checksum mismatch\0"
-    "line too long\0"
-    "invalid character\0"
-    "no preset\0"
-    "trajectory infeasible\0"
-    "estop active\0"
-    "motor fault\0"
-    "motor idle\0"
-    "bad argument\0"
-    "build mismatch";
+/* Sized to leave out the literal's own final NUL: the last phrase ends the
+ * block, as each other one ends at its '\0'. */
+#define PHRASE_(name, phrase) phrase "\0"
+static const char phrases[sizeof(DARAN_RESULT_LIST(PHRASE_)) - 1u] = DARAN_RESULT_LIST(PHRASE_);
+#undef PHRASE_
 
 const char *daran_nth_text(const char *block, unsigned n)
 {
