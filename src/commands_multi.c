@@ -16,14 +16,14 @@
 daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request)
 {
     float values[DARAN_PRESET_VALUES];
-    for (uint8_t i = 0; i < 3u; i++) {
+    for (uint8_t i = 0; i < DARAN_PRESET_VALUES; i++) {
         daran_field_t field = daran_field_at(request, 2u + i);
         daran_result_t result = daran_field_f32(&field, &values[i]);
         if (result != DARAN_OK) {
             return result;
         }
     }
-    for (uint8_t i = 0; i < 3u; i++) {
+    for (uint8_t i = 0; i < DARAN_PRESET_VALUES; i++) {
         drive->preset[i] = values[i];
     }
     drive->has_preset = 1;

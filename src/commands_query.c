@@ -111,12 +111,14 @@ daran_result_t daran_cmd_e(daran_drive_t *drive, const daran_request_t *request)
         char path[DARAN_PATH_MAX];
         size_t len = daran_property_path(error_registers[i], path);
         daran_reply_begin(drive);
-        if (len > 6u) {
-            daran_reply_text(drive, path, len - 6u);
+        static const char register_suffix[] = ".error";
+        if (len > sizeof register_suffix - 1u) {
+            daran_reply_text(drive, path, len - (sizeof register_suffix - 1u));
         } else {
-            daran_reply_text(drive, "axis", 4);
+            daran_reply_text(drive, DARAN_AXIS_WORD, DARAN_AXIS_WORD_LEN);
         }
-        daran_reply_text(drive, ": ", 2);
+        static const char separator[] = ": ";
+        daran_reply_text(drive, separator, sizeof separator - 1u);
         daran_reply_u64(drive, values[i]);
         daran_reply_end(drive);
     }

@@ -62,14 +62,15 @@ daran_result_t daran_process_line(daran_drive_t *drive, const char *text, size_t
 static bool split_axis_path(const daran_field_t *path, daran_field_t *number,
                             daran_field_t *name)
 {
-    if (path->len < 5u || path->text[0] != 'a' || path->text[1] != 'x' ||
-        path->text[2] != 'i' || path->text[3] != 's') {
+    if (path->len <= DARAN_AXIS_WORD_LEN || path->text[0] != DARAN_AXIS_WORD[0] ||
+        path->text[1] != DARAN_AXIS_WORD[1] || path->text[2] != DARAN_AXIS_WORD[2] ||
+        path->text[3] != DARAN_AXIS_WORD[3]) {
         return false;
     }
-    for (uint16_t dot = 4; dot < path->len; dot++) {
+    for (uint16_t dot = DARAN_AXIS_WORD_LEN; dot < path->len; dot++) {
         if (path->text[dot] == '.') {
-            number->text = path->text + 4;
-            number->len = (uint16_t)(dot - 4u);
+            number->text = path->text + DARAN_AXIS_WORD_LEN;
+            number->len = (uint16_t)(dot - DARAN_AXIS_WORD_LEN);
             name->text = path->text + dot + 1;
             name->len = (uint16_t)(path->len - dot - 1u);
             return true;

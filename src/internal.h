@@ -138,6 +138,11 @@ const daran_command_t *daran_find_command(const daran_field_t *word);
 /* DARAN_OK from the command's handler, or its error. */
 daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *request);
 
+/* The word before an axis path's motor id (`axis1.…`, D8), and the name
+ * `e` gives axis0.error's line: one spelling for both. */
+#define DARAN_AXIS_WORD "axis"
+#define DARAN_AXIS_WORD_LEN (sizeof DARAN_AXIS_WORD - 1u)
+
 /* property_table.c */
 daran_property_t daran_property_row(daran_prop_t prop);
 

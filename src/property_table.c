@@ -167,7 +167,8 @@ void daran_reply_path(daran_drive_t *drive, daran_prop_t prop)
 {
     char path[DARAN_PATH_MAX];
     if (DARAN_PROPERTY_SCOPE(property_attr[prop]) == DARAN_SCOPE_AXIS) {
-        daran_reply_text(drive, "axis0.", 6);
+        static const char axis0[] = DARAN_AXIS_WORD "0.";
+        daran_reply_text(drive, axis0, sizeof axis0 - 1u);
     }
     daran_reply_text(drive, path, daran_property_path(prop, path));
 }

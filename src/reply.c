@@ -74,7 +74,8 @@ void daran_reply_end(daran_drive_t *drive)
 void daran_reply_error(daran_drive_t *drive, daran_result_t result)
 {
     daran_reply_begin(drive);
-    daran_reply_text(drive, "error: ", 7);
+    static const char error_prefix[] = "error: ";
+    daran_reply_text(drive, error_prefix, sizeof error_prefix - 1u);
     daran_reply_cstr(drive, daran_result_phrase(result));
     daran_reply_end(drive);
 }
