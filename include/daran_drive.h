@@ -104,7 +104,7 @@ typedef struct daran_drive {
     uint16_t reply_len;
     uint8_t line_flags;      /* too long, invalid byte, inside a field */
     uint8_t line_xor;        /* XOR of the line's bytes before its first '*' */
-    uint8_t reply_checksum;  /* the current request carried a checksum field */
+    uint8_t reply_wants_checksum;  /* the current request carried a checksum field */
     uint8_t has_preset;
     uint8_t port_command_count;
     uint8_t telemetry_due;   /* 1: no report scheduled yet, the next tick reports */

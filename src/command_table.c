@@ -13,10 +13,10 @@ enum handler {
     HANDLER_W,
     HANDLER_ACTION,
     HANDLER_H,
-    HANDLER_F,
-    HANDLER_G,
-    HANDLER_I,
-    HANDLER_E,
+    HANDLER_FEEDBACK,
+    HANDLER_POWER,
+    HANDLER_IDENTITY,
+    HANDLER_ERRORS,
     HANDLER_COUNT
 };
 
@@ -28,21 +28,21 @@ enum handler {
  * after the id: every command but r and w takes the motor id first, and `h`
  * prints it). t first: it is the command a host streams at 1 kHz. */
 #define SINGLE_MOTION_COMMANDS(X)                                                     \
-    X("t", 3, 5, 0, DARAN_SHAPE_T, HANDLER_MOTION, "pos [vel] [bw]")              \
-    X("q", 3, 5, 0, DARAN_SHAPE_Q, HANDLER_MOTION, "pos [vel] [acc]")             \
-    X("p", 3, 5, 0, DARAN_SHAPE_P, HANDLER_MOTION, "pos [vel_ff] [torque_ff]")    \
-    X("v", 3, 5, 0, DARAN_SHAPE_V, HANDLER_MOTION, "vel [param] [mode]")          \
-    X("c", 3, 5, 0, DARAN_SHAPE_C, HANDLER_MOTION, "torque [param] [mode]")       \
-    X("d", 7, 7, 0, DARAN_SHAPE_D, HANDLER_MOTION, "pdes vdes tff kp kd")
+    X("t", 3, 5, 0, DARAN_SHAPE_FILTERED, HANDLER_MOTION, "pos [vel] [bw]")              \
+    X("q", 3, 5, 0, DARAN_SHAPE_TRAPEZOID, HANDLER_MOTION, "pos [vel] [acc]")             \
+    X("p", 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, HANDLER_MOTION, "pos [vel_ff] [torque_ff]")    \
+    X("v", 3, 5, 0, DARAN_SHAPE_VELOCITY, HANDLER_MOTION, "vel [param] [mode]")          \
+    X("c", 3, 5, 0, DARAN_SHAPE_TORQUE, HANDLER_MOTION, "torque [param] [mode]")       \
+    X("d", 7, 7, 0, DARAN_SHAPE_IMPEDANCE, HANDLER_MOTION, "pdes vdes tff kp kd")
 
 #if DARAN_ENABLE_MULTI_MOTOR
 #define MULTI_MOTION_COMMANDS(X)                                       \
     X("ms", 2 + DARAN_PRESET_VALUES, 2 + DARAN_PRESET_VALUES, 0, 0, HANDLER_MS, "p1 p2 p3") \
-    X("mt", 3, 3, 0, DARAN_SHAPE_T, HANDLER_START, "rel")           \
-    X("mq", 3, 3, 0, DARAN_SHAPE_Q, HANDLER_START, "rel")           \
-    X("mp", 3, 3, 0, DARAN_SHAPE_P, HANDLER_START, "rel")           \
-    X("mv", 2, 2, 0, DARAN_SHAPE_V, HANDLER_START, "")               \
-    X("mc", 2, 2, 0, DARAN_SHAPE_C, HANDLER_START, "")
+    X("mt", 3, 3, 0, DARAN_SHAPE_FILTERED, HANDLER_START, "rel")           \
+    X("mq", 3, 3, 0, DARAN_SHAPE_TRAPEZOID, HANDLER_START, "rel")           \
+    X("mp", 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, HANDLER_START, "rel")           \
+    X("mv", 2, 2, 0, DARAN_SHAPE_VELOCITY, HANDLER_START, "")               \
+    X("mc", 2, 2, 0, DARAN_SHAPE_TORQUE, HANDLER_START, "")
 #else
 #define MULTI_MOTION_COMMANDS(X)
 #endif
@@ -64,10 +64,10 @@ enum handler {
 #endif
 
 #define QUERY_COMMANDS(X)                                                  \
-    X("f", 2, 2, READ, 0, HANDLER_F, "")                                 \
-    X("g", 2, 2, READ, 0, HANDLER_G, "")                                 \
-    X("i", 2, 2, READ, 0, HANDLER_I, "")                                 \
-    X("e", 2, 2, READ, 0, HANDLER_E, "")                                 \
+    X("f", 2, 2, READ, 0, HANDLER_FEEDBACK, "")                                 \
+    X("g", 2, 2, READ, 0, HANDLER_POWER, "")                                 \
+    X("i", 2, 2, READ, 0, HANDLER_IDENTITY, "")                                 \
+    X("e", 2, 2, READ, 0, HANDLER_ERRORS, "")                                 \
     X("u", 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, HANDLER_ACTION, "")
 
 #define DARAN_COMMANDS(X)                                                  \
@@ -162,10 +162,10 @@ static daran_handler_fn const handlers[HANDLER_COUNT] = {
 #if DARAN_ENABLE_HELP
     [HANDLER_H] = command_h,
 #endif
-    [HANDLER_F] = daran_cmd_f,
-    [HANDLER_G] = daran_cmd_g,
-    [HANDLER_I] = daran_cmd_i,
-    [HANDLER_E] = daran_cmd_e,
+    [HANDLER_FEEDBACK] = daran_cmd_feedback,
+    [HANDLER_POWER] = daran_cmd_power,
+    [HANDLER_IDENTITY] = daran_cmd_identity,
+    [HANDLER_ERRORS] = daran_cmd_errors,
 };
 
 static char lower(char c)

@@ -89,7 +89,7 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
 {
     const float *values = drive->preset;
     daran_result_t result = DARAN_OK;
-    if (shape == DARAN_SHAPE_Q) {
+    if (shape == DARAN_SHAPE_TRAPEZOID) {
         if (!(values[1] >= 0.0f) || !(values[2] >= 0.0f)) {
             return DARAN_ERR_OUT_OF_RANGE;
         }
@@ -99,7 +99,7 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
     } else {
         result = daran_shape_move(shape, values, 3, move);
     }
-    if (result != DARAN_OK || shape == DARAN_SHAPE_V || shape == DARAN_SHAPE_C) {
+    if (result != DARAN_OK || shape == DARAN_SHAPE_VELOCITY || shape == DARAN_SHAPE_TORQUE) {
         return result;
     }
     daran_value_t setpoint;
@@ -113,7 +113,7 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
     if (!daran_is_finite(move->pos_deg)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
-    if (shape != DARAN_SHAPE_Q) {
+    if (shape != DARAN_SHAPE_TRAPEZOID) {
         return DARAN_OK;
     }
     bool s_curve;

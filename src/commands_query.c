@@ -50,21 +50,21 @@ daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *
     return result;
 }
 
-daran_result_t daran_cmd_f(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_cmd_feedback(daran_drive_t *drive, const daran_request_t *request)
 {
     static const daran_prop_t props[] = {DARAN_PROP_POS_ESTIMATE, DARAN_PROP_VEL_ESTIMATE};
     (void)request;
     return daran_reply_properties(drive, props, 2);
 }
 
-daran_result_t daran_cmd_g(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_cmd_power(daran_drive_t *drive, const daran_request_t *request)
 {
     static const daran_prop_t props[] = {DARAN_PROP_VBUS_VOLTAGE, DARAN_PROP_IQ_MEASURED};
     (void)request;
     return daran_reply_properties(drive, props, 2);
 }
 
-daran_result_t daran_cmd_i(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_cmd_identity(daran_drive_t *drive, const daran_request_t *request)
 {
     static const daran_prop_t props[] = {DARAN_PROP_FW_VERSION, DARAN_PROP_HW_VERSION,
                                          DARAN_PROP_SERIAL_NUMBER};
@@ -85,7 +85,7 @@ static const daran_prop_t error_registers[] = {
  * (daran_hal.h); 31 for can.error, which no bit summarises. */
 static const uint8_t summary_bit[ERROR_REGISTER_COUNT - 1u] = {6, 8, 9, 18, 18, 31};
 
-daran_result_t daran_cmd_e(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *request)
 {
     /* Every register is read before the first line goes out: a failing read
      * answers one error line, never half a report (D24). axis0.error must

@@ -94,7 +94,7 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     uint8_t count = fields->count;
     if (count == 0u) {
         /* Blank lines are ignored; a checksum with no command is not (D5). */
-        return drive->reply_checksum ? DARAN_ERR_UNKNOWN_COMMAND : DARAN_OK;
+        return drive->reply_wants_checksum ? DARAN_ERR_UNKNOWN_COMMAND : DARAN_OK;
     }
     daran_field_t word = daran_field_of(line->text, fields, 0);
     /* The core's commands first, then the port's: a port cannot shadow one. */
@@ -181,13 +181,13 @@ daran_result_t daran_run_framed_line(daran_drive_t *drive)
         line.star_at = line.len;
     }
     daran_result_t result;
-    drive->reply_checksum = 0;
+    drive->reply_wants_checksum = 0;
     if ((flags & (DARAN_LINE_DAMAGED | DARAN_LINE_TOO_LONG)) != 0u) {
         result = DARAN_ERR_LINE_TOO_LONG;
     } else if ((flags & DARAN_LINE_INVALID_BYTE) != 0u) {
         result = DARAN_ERR_INVALID_CHARACTER;
     } else {
-        result = daran_checksum_check(&line, &drive->reply_checksum);
+        result = daran_checksum_check(&line, &drive->reply_wants_checksum);
         if (result == DARAN_OK) {
             result = dispatch(drive, &line);
         }

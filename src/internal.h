@@ -218,12 +218,12 @@ bool daran_is_finite(float value);
 
 /* commands_motion.c: the value layouts of t q p v c d, shared by the starts. */
 typedef enum daran_shape {
-    DARAN_SHAPE_T,
-    DARAN_SHAPE_Q,
-    DARAN_SHAPE_P,
-    DARAN_SHAPE_V,
-    DARAN_SHAPE_C,
-    DARAN_SHAPE_D,
+    DARAN_SHAPE_FILTERED,    /* t, mt */
+    DARAN_SHAPE_TRAPEZOID,   /* q, mq */
+    DARAN_SHAPE_PASSTHROUGH, /* p, mp */
+    DARAN_SHAPE_VELOCITY,    /* v, mv */
+    DARAN_SHAPE_TORQUE,      /* c, mc */
+    DARAN_SHAPE_IMPEDANCE,   /* d */
     DARAN_SHAPE_COUNT
 } daran_shape_t;
 /* Check @p count values (the line's, after the id, or a preset's) against a
@@ -250,10 +250,10 @@ daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *requ
 daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_action(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_f(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_g(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_i(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_e(daran_drive_t *drive, const daran_request_t *request);
+daran_result_t daran_cmd_feedback(daran_drive_t *drive, const daran_request_t *request);
+daran_result_t daran_cmd_power(daran_drive_t *drive, const daran_request_t *request);
+daran_result_t daran_cmd_identity(daran_drive_t *drive, const daran_request_t *request);
+daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *request);
 
 #endif /* DARAN_INTERNAL_H */

@@ -58,7 +58,7 @@ void daran_reply_end(daran_drive_t *drive)
 {
     size_t len = drive->reply_len;
     char *out = drive->reply;
-    if (drive->reply_checksum) {
+    if (drive->reply_wants_checksum) {
         uint8_t sum = (uint8_t)(daran_xor(out, len) ^ (uint8_t)' ');
         out[len++] = ' ';
         out[len++] = '*';

@@ -71,8 +71,8 @@ daran_result_t daran_telemetry_tick(daran_drive_t *drive, uint32_t tick, uint32_
             props[count++] = (daran_prop_t)field_props[bit];
         }
     }
-    uint8_t checksum = drive->reply_checksum;
-    drive->reply_checksum = 1; /* reports always carry one */
+    uint8_t checksum = drive->reply_wants_checksum;
+    drive->reply_wants_checksum = 1; /* reports always carry one */
     daran_reply_begin(drive);
     daran_reply_text(drive, "@", 1);
     daran_reply_u64(drive, settings[1].u32);
@@ -82,6 +82,6 @@ daran_result_t daran_telemetry_tick(daran_drive_t *drive, uint32_t tick, uint32_
     if (result == DARAN_OK) {
         daran_reply_end(drive);
     }
-    drive->reply_checksum = checksum;
+    drive->reply_wants_checksum = checksum;
     return result;
 }
