@@ -552,6 +552,27 @@ static void test_u64_text_parses_back(void)
     }
 }
 
+/* A halfway case longer than the exact comparison takes (DARAN_BIG_DIGITS,
+ * 120 digits): a nonzero digit past the 120th breaks the tie upwards, all
+ * zeros past it leave it to round-half-even. 16777217 is halfway between the
+ * floats 16777216 (0x4B800000) and 16777218 (0x4B800001). */
+static void test_digits_past_the_exact_window_break_a_tie(void)
+{
+    char text[160];
+    memset(text, '0', sizeof text);
+    memcpy(text, "16777217", 8);
+    text[120] = '1'; /* the 121st significant digit */
+    text[121] = '\0';
+    /* 16777217 followed by 112 zeros and a 1: an integer 10^113 times the
+     * halfway value and a hair: above it, so it rounds up */
+    char scaled[200];
+    snprintf(scaled, sizeof scaled, "%.8s.%se-0", text, text + 8);
+    EXPECT_F32(scaled, 0x4B800001u);
+    text[120] = '0';
+    snprintf(scaled, sizeof scaled, "%.8s.%s", text, text + 8);
+    EXPECT_F32(scaled, 0x4B800000u); /* exactly halfway: to even */
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -597,5 +618,6 @@ int main(void)
     RUN_TEST(test_u64_prints_in_decimal);
     RUN_TEST(test_u64_printing_agrees_with_snprintf);
     RUN_TEST(test_u64_text_parses_back);
+    RUN_TEST(test_digits_past_the_exact_window_break_a_tie);
     return UNITY_END();
 }

@@ -91,6 +91,10 @@ static void test_negative_decimal_and_exponent_ends(void)
 
 static void test_sign_ranges_still_hold_beside_intervals(void)
 {
+    /* >= 0 takes 0 and -0 (D27) in a build with intervals too */
+    accepted("w axis0.output_shaft.load_inertia 0", DARAN_PROP_LOAD_INERTIA, 0.0f);
+    accepted("w axis0.output_shaft.load_inertia -0", DARAN_PROP_LOAD_INERTIA, -0.0f);
+    refused("w axis0.output_shaft.load_inertia -1e-30");
     refused("w axis0.output_shaft.vel_limit 0");
     accepted("w axis0.output_shaft.vel_limit 5", DARAN_PROP_SHAFT_VEL_LIMIT, 5.0f);
     refused("w axis0.output_shaft.vel_limit -5");

@@ -387,6 +387,10 @@ static void test_a_bad_port_table_is_refused_whole_and_the_drive_keeps_its_own(v
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, NULL, 0, NULL));
     ASSERT_ERROR(m, "abcdefgh 1", "unknown command");
     TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_set_port_commands(NULL, port_commands, 3, NULL));
+    /* the alphabet's ends are letters too */
+    static const daran_port_command_t a_to_z[] = {{"az", 0, 0, 0, sb_handler, ""},
+                                                  {"zap", 0, 0, 0, sb_handler, ""}};
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, a_to_z, 2, &brake));
 }
 
 static daran_result_t probe_results[3];
