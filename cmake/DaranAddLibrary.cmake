@@ -42,6 +42,54 @@ function(daran_ascii_set_root root include_dir)
   set_property(GLOBAL PROPERTY DARAN_ASCII_INCLUDE_DIR "${include_dir}")
 endfunction()
 
+# The helpers of the package's functions (this module, DaranSim,
+# DaranTestSupport, DaranConformance, DaranFuzzTarget), each named by the
+# function that calls it in its messages:
+#
+# _daran_package_dir(<out> <caller> <folder> <file>...): <out> is <folder>
+# of the package (the source tree's layout under DARAN_ASCII_ROOT; "" for the
+# root itself), after checking that each <file> is there.
+function(_daran_package_dir out caller folder)
+  get_property(_root GLOBAL PROPERTY DARAN_ASCII_ROOT)
+  set(_dir "${_root}")
+  if(folder)
+    set(_dir "${_root}/${folder}")
+  endif()
+  foreach(_file IN LISTS ARGN)
+    if(NOT _root OR NOT EXISTS "${_dir}/${_file}")
+      message(FATAL_ERROR "${caller}: '${_dir}/${_file}' is missing: the package's sources are "
+                          "not under DARAN_ASCII_ROOT ('${_root}'); install daran-ascii with them "
+                          "(its default) or use it through add_subdirectory")
+    endif()
+  endforeach()
+  set(${out} "${_dir}" PARENT_SCOPE)
+endfunction()
+
+# _daran_check_core(<caller> <library>): stop unless <library> is a core target.
+function(_daran_check_core caller library)
+  if(NOT library)
+    message(FATAL_ERROR "${caller}: LIBRARY <core target> is required (a target of "
+                        "daran_ascii_add_library(), or daran_ascii::daran_ascii)")
+  endif()
+  if(NOT TARGET ${library})
+    message(FATAL_ERROR "${caller}: LIBRARY ${library} is not a target")
+  endif()
+endfunction()
+
+# _daran_check_flags(<result> <source> <flag>...): does the compiler compile
+# and link <source> with the flags? Cached in <result>.
+function(_daran_check_flags result source)
+  if(DEFINED ${result})
+    return()
+  endif()
+  include(CheckCSourceCompiles)
+  set(CMAKE_REQUIRED_FLAGS "${ARGN}")
+  string(REPLACE ";" " " CMAKE_REQUIRED_FLAGS "${CMAKE_REQUIRED_FLAGS}")
+  set(CMAKE_REQUIRED_LINK_OPTIONS ${ARGN})
+  set(CMAKE_REQUIRED_QUIET ON)
+  check_c_source_compiles("${source}" ${result})
+endfunction()
+
 # A 32-bit signature of an OMIT list, for daran_init()'s build check: the
 # list reaches the generator only, so the programs compiled against the core
 # learn it through this definition (DARAN_OMIT_LIST_SIGNATURE).
@@ -62,12 +110,9 @@ function(daran_ascii_add_library target)
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "daran_ascii_add_library(${target}): unknown arguments ${arg_UNPARSED_ARGUMENTS}")
   endif()
-  get_property(_root GLOBAL PROPERTY DARAN_ASCII_ROOT)
+  _daran_package_dir(_root "daran_ascii_add_library(${target})" "" src/drive.c
+                     tools/gen_property_index.py)
   get_property(_include GLOBAL PROPERTY DARAN_ASCII_INCLUDE_DIR)
-  if(NOT _root OR NOT EXISTS "${_root}/src/drive.c")
-    message(FATAL_ERROR "daran_ascii_add_library(${target}): the library's sources are not "
-                        "at '${_root}/src' (a package installed without them?)")
-  endif()
 
   set(_header "")
   set(_config_args "")

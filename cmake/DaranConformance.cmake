@@ -21,8 +21,7 @@
 # builds the same program without registering a test (to run it with other
 # arguments, e.g. --verbose, or under a wrapper of one's own).
 include_guard(GLOBAL)
-include("${CMAKE_CURRENT_LIST_DIR}/DaranTestSupport.cmake")
-include("${CMAKE_CURRENT_LIST_DIR}/DaranFuzzTarget.cmake") # _daran_fuzz_check_flags()
+include("${CMAKE_CURRENT_LIST_DIR}/DaranAddLibrary.cmake") # the package's helpers
 
 function(daran_ascii_add_conformance_program name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "NO_SANITIZERS" "LIBRARY" "SOURCES")
@@ -32,17 +31,19 @@ function(daran_ascii_add_conformance_program name)
                         "daran_ascii_add_conformance_test(<name> LIBRARY <core target> "
                         "SOURCES <test-port file> <HAL sources>...))")
   endif()
-  _daran_testkit_check_library("${_caller}" "${arg_LIBRARY}")
+  _daran_check_core("${_caller}" "${arg_LIBRARY}")
   if(NOT arg_SOURCES)
     message(FATAL_ERROR "${_caller}: SOURCES must give the test-port file (it defines "
                         "daran_test_port()) and the HAL's sources")
   endif()
-  _daran_testkit_dirs("${_caller}" _root _include)
-  set(_dir "${_root}/testkit/conformance")
+  _daran_package_dir(_testkit "${_caller}" testkit recorder/recorder.c
+                     conformance/conformance_sources.cmake)
+  set(_include "${_testkit}/include")
+  set(_dir "${_testkit}/conformance")
   include("${_dir}/conformance_sources.cmake")
   list(TRANSFORM DARAN_CONFORMANCE_SOURCES PREPEND "${_dir}/")
 
-  add_executable(${name} ${DARAN_CONFORMANCE_SOURCES} "${_root}/testkit/recorder/recorder.c"
+  add_executable(${name} ${DARAN_CONFORMANCE_SOURCES} "${_testkit}/recorder/recorder.c"
                  ${arg_SOURCES})
   target_include_directories(${name} PRIVATE "${_include}" "${_dir}")
   target_link_libraries(${name} PRIVATE ${arg_LIBRARY})
@@ -54,7 +55,7 @@ function(daran_ascii_add_conformance_program name)
   # so a HAL that writes out of bounds or overflows fails here too
   # (NO_SANITIZERS: leave the program's flags as the project has them).
   if(NOT arg_NO_SANITIZERS AND NOT CMAKE_CROSSCOMPILING)
-    _daran_fuzz_check_flags(DARAN_FUZZ_HAVE_SANITIZERS "int main(void) { return 0; }"
+    _daran_check_flags(DARAN_FUZZ_HAVE_SANITIZERS "int main(void) { return 0; }"
                             -fsanitize=address,undefined)
     if(DARAN_FUZZ_HAVE_SANITIZERS)
       set(_sanitize -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)

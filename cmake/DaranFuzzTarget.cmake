@@ -44,20 +44,7 @@
 # a core built with an options header must be given as the target that
 # daran_ascii_add_library() made.
 include_guard(GLOBAL)
-
-include(CheckCSourceCompiles)
-
-# Does the compiler compile and link a program with @flags (a list)?
-function(_daran_fuzz_check_flags result source)
-  if(DEFINED ${result})
-    return()
-  endif()
-  set(CMAKE_REQUIRED_FLAGS "${ARGN}")
-  string(REPLACE ";" " " CMAKE_REQUIRED_FLAGS "${CMAKE_REQUIRED_FLAGS}")
-  set(CMAKE_REQUIRED_LINK_OPTIONS ${ARGN})
-  set(CMAKE_REQUIRED_QUIET ON)
-  check_c_source_compiles("${source}" ${result})
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/DaranAddLibrary.cmake") # the package's helpers
 
 # <copy>: a static library of <core>'s sources compiled with the extra
 # options ARGN, with <core>'s usage requirements.
@@ -106,10 +93,7 @@ function(daran_ascii_add_fuzz_target name)
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): unknown arguments ${arg_UNPARSED_ARGUMENTS}")
   endif()
-  if(NOT arg_LIBRARY OR NOT TARGET "${arg_LIBRARY}")
-    message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): LIBRARY must name a core target "
-                        "(daran_ascii_add_library()), got '${arg_LIBRARY}'")
-  endif()
+  _daran_check_core("daran_ascii_add_fuzz_target(${name})" "${arg_LIBRARY}")
   if(NOT arg_SOURCES)
     message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): SOURCES must give the test-port "
                         "file (daran_test_port()) and the HAL's sources")
@@ -120,13 +104,10 @@ function(daran_ascii_add_fuzz_target name)
   if(NOT arg_TIMEOUT)
     set(arg_TIMEOUT 10)
   endif()
-  get_property(_root GLOBAL PROPERTY DARAN_ASCII_ROOT)
-  set(_fuzz "${_root}/testkit/fuzz")
-  set(_recorder "${_root}/testkit/recorder/recorder.c")
-  if(NOT _root OR NOT EXISTS "${_fuzz}/fuzz_port_target.c" OR NOT EXISTS "${_recorder}")
-    message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): the fuzz harness's sources are "
-                        "not under '${_root}/testkit' (a package installed without them?)")
-  endif()
+  _daran_package_dir(_testkit "daran_ascii_add_fuzz_target(${name})" testkit
+                     fuzz/fuzz_port_target.c recorder/recorder.c)
+  set(_fuzz "${_testkit}/fuzz")
+  set(_recorder "${_testkit}/recorder/recorder.c")
 
   # The core: an alias is its target; an imported one has no sources.
   set(_core "${arg_LIBRARY}")
@@ -148,7 +129,7 @@ function(daran_ascii_add_fuzz_target name)
     endif()
   endif()
 
-  _daran_fuzz_check_flags(DARAN_FUZZ_HAVE_SANITIZERS "int main(void) { return 0; }"
+  _daran_check_flags(DARAN_FUZZ_HAVE_SANITIZERS "int main(void) { return 0; }"
                           -fsanitize=address,undefined)
   set(_sanitize "")
   if(DARAN_FUZZ_HAVE_SANITIZERS)
@@ -159,7 +140,7 @@ function(daran_ascii_add_fuzz_target name)
   set(_harness_sources "${_fuzz}/fuzz_port_target.c" "${_fuzz}/fuzz_checks.c" "${_recorder}")
   set(_warnings -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wstrict-prototypes
                 -Wmissing-prototypes)
-  set(_includes "${_fuzz}" "${_root}/testkit/include" ${arg_INCLUDE_DIRECTORIES})
+  set(_includes "${_fuzz}" "${_testkit}/include" ${arg_INCLUDE_DIRECTORIES})
   # Room for every call of a line (the recorder's log; the same value in the
   # harness and the recorder, which share the struct).
   set(_definitions DARAN_RECORDER_CALLS_MAX=256)
@@ -205,7 +186,7 @@ function(daran_ascii_add_fuzz_target name)
                    "-DCMAKE_C_COMPILER=clang-14 for the libFuzzer harness ${name} and ${name}_run)")
     return()
   endif()
-  _daran_fuzz_check_flags(DARAN_FUZZ_HAVE_LIBFUZZER
+  _daran_check_flags(DARAN_FUZZ_HAVE_LIBFUZZER
     "#include <stddef.h>\n#include <stdint.h>\nint LLVMFuzzerTestOneInput(const uint8_t *d, size_t n);\nint LLVMFuzzerTestOneInput(const uint8_t *d, size_t n) { (void)d; return (int)n * 0; }"
     -fsanitize=fuzzer,address,undefined)
   if(NOT DARAN_FUZZ_HAVE_LIBFUZZER)

@@ -12,6 +12,7 @@
 # (global property DARAN_ASCII_ROOT). The prebuilt daran_ascii::sim is the
 # same for the default core.
 include_guard(GLOBAL)
+include("${CMAKE_CURRENT_LIST_DIR}/DaranAddLibrary.cmake") # the package's helpers
 
 function(daran_ascii_add_sim target)
   cmake_parse_arguments(PARSE_ARGV 1 _sim "" "LIBRARY" "")
@@ -20,25 +21,8 @@ function(daran_ascii_add_sim target)
                         "'${_sim_UNPARSED_ARGUMENTS}' (usage: daran_ascii_add_sim(<target> "
                         "LIBRARY <core target>))")
   endif()
-  if(NOT _sim_LIBRARY)
-    message(FATAL_ERROR "daran_ascii_add_sim(${target}): LIBRARY <core target> is required "
-                        "(a target of daran_ascii_add_library(), or daran_ascii::daran_ascii)")
-  endif()
-  if(NOT TARGET ${_sim_LIBRARY})
-    message(FATAL_ERROR "daran_ascii_add_sim(${target}): LIBRARY ${_sim_LIBRARY} is not a target")
-  endif()
-
-  get_property(_root GLOBAL PROPERTY DARAN_ASCII_ROOT)
-  if(NOT _root AND EXISTS "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../port/sim/daran_sim_sources.cmake")
-    # this module in the source tree, before the package has named its root
-    get_filename_component(_root "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/.." ABSOLUTE)
-  endif()
-  set(_dir "${_root}/port/sim")
-  if(NOT _root OR NOT EXISTS "${_dir}/daran_sim_sources.cmake")
-    message(FATAL_ERROR "daran_ascii_add_sim(${target}): the simulator's sources are not in "
-                        "'${_dir}' (DARAN_ASCII_ROOT: '${_root}'); install daran-ascii with "
-                        "the simulator (DARAN_BUILD_SIM) or use it through add_subdirectory")
-  endif()
+  _daran_check_core("daran_ascii_add_sim(${target})" "${_sim_LIBRARY}")
+  _daran_package_dir(_dir "daran_ascii_add_sim(${target})" port/sim daran_sim_sources.cmake)
   include("${_dir}/daran_sim_sources.cmake")
   list(TRANSFORM DARAN_SIM_LIBRARY_SOURCES PREPEND "${_dir}/")
 

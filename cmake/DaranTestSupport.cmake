@@ -16,33 +16,7 @@
 # the default core.
 include_guard(GLOBAL)
 
-# The package's root and the test kit's headers, for the functions of this
-# module and of DaranConformance.cmake (they run in their callers' scopes).
-function(_daran_testkit_dirs caller root_out include_out)
-  get_property(_root GLOBAL PROPERTY DARAN_ASCII_ROOT)
-  if(NOT _root AND EXISTS "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../testkit/recorder/recorder.c")
-    # this module in the source tree, before the package has named its root
-    get_filename_component(_root "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/.." ABSOLUTE)
-  endif()
-  if(NOT _root OR NOT EXISTS "${_root}/testkit/recorder/recorder.c"
-     OR NOT EXISTS "${_root}/testkit/include/daran_recorder.h")
-    message(FATAL_ERROR "${caller}: the test kit's sources are not under '${_root}/testkit' "
-                        "(DARAN_ASCII_ROOT); install daran-ascii with them (its default) or use "
-                        "it through add_subdirectory")
-  endif()
-  set(${root_out} "${_root}" PARENT_SCOPE)
-  set(${include_out} "${_root}/testkit/include" PARENT_SCOPE)
-endfunction()
-
-function(_daran_testkit_check_library caller library)
-  if(NOT library)
-    message(FATAL_ERROR "${caller}: LIBRARY <core target> is required (a target of "
-                        "daran_ascii_add_library(), or daran_ascii::daran_ascii)")
-  endif()
-  if(NOT TARGET ${library})
-    message(FATAL_ERROR "${caller}: LIBRARY ${library} is not a target")
-  endif()
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/DaranAddLibrary.cmake") # the package's helpers
 
 function(daran_ascii_add_test_support target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "LIBRARY" "")
@@ -51,10 +25,11 @@ function(daran_ascii_add_test_support target)
     message(FATAL_ERROR "${_caller}: unexpected arguments '${arg_UNPARSED_ARGUMENTS}' (usage: "
                         "daran_ascii_add_test_support(<target> LIBRARY <core target>))")
   endif()
-  _daran_testkit_check_library("${_caller}" "${arg_LIBRARY}")
-  _daran_testkit_dirs("${_caller}" _root _include)
+  _daran_check_core("${_caller}" "${arg_LIBRARY}")
+  _daran_package_dir(_testkit "${_caller}" testkit recorder/recorder.c include/daran_recorder.h)
+  set(_include "${_testkit}/include")
 
-  add_library(${target} STATIC "${_root}/testkit/recorder/recorder.c")
+  add_library(${target} STATIC "${_testkit}/recorder/recorder.c")
   target_include_directories(${target} PUBLIC "$<BUILD_INTERFACE:${_include}>")
   target_link_libraries(${target} PUBLIC ${arg_LIBRARY})
   target_compile_features(${target} PUBLIC c_std_99)
