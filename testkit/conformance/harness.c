@@ -111,35 +111,6 @@ void conf_list_requirements(void)
 
 /* ---- text helpers ---- */
 
-static size_t escape(const char *text, size_t len, char *buf, size_t size)
-{
-    size_t k = 0;
-    for (size_t i = 0; i < len && k + 6u < size; i++) {
-        unsigned char c = (unsigned char)text[i];
-        if (c == '\n') {
-            buf[k++] = '\\';
-            buf[k++] = 'n';
-        } else if (c == '\r') {
-            buf[k++] = '\\';
-            buf[k++] = 'r';
-        } else if (c == '\t') {
-            buf[k++] = '\\';
-            buf[k++] = 't';
-        } else if (c == '"' || c == '\\') {
-            buf[k++] = '\\';
-            buf[k++] = (char)c;
-        } else if (c < 0x20u || c >= 0x7Fu) {
-            k += (size_t)snprintf(buf + k, size - k, "\\x%02X", c);
-        } else {
-            buf[k++] = (char)c;
-        }
-    }
-    if (size > 0u) {
-        buf[k < size ? k : size - 1u] = '\0';
-    }
-    return k;
-}
-
 static void transcript_add(const char *fmt, ...)
 #if defined(__GNUC__) || defined(__clang__)
     __attribute__((format(printf, 1, 2)))
@@ -181,8 +152,8 @@ static void form_failure(const char *what, const char *line, size_t len)
     }
     char sent[512];
     char got[512];
-    (void)escape(h.line, h.line_len, sent, sizeof sent);
-    (void)escape(line, len, got, sizeof got);
+    (void)daran_recorder_escape(h.line, h.line_len, sent, sizeof sent);
+    (void)daran_recorder_escape(line, len, got, sizeof got);
     printf("FAIL %s %s\n  expected: %s\n  > %s\n    reply line: \"%s\"\n",
            conf_req_id(REQ_REPLY_FORM), titles[REQ_REPLY_FORM], what, sent, got);
 }
@@ -316,13 +287,13 @@ void conf_send_n(const char *line, size_t len)
     (void)daran_process_line(&h.drive, line, len);
 
     char text[700];
-    (void)escape(line, len, text, sizeof text);
+    (void)daran_recorder_escape(line, len, text, sizeof text);
     transcript_add("  > %s%s\n", text, len > 300u ? " ..." : "");
     if (h.reply_len == 0u) {
         transcript_add("    reply: (none)\n");
     } else {
         size_t shown = h.reply_len < 600u ? h.reply_len : 600u;
-        (void)escape(h.reply, shown, text, sizeof text);
+        (void)daran_recorder_escape(h.reply, shown, text, sizeof text);
         transcript_add("    reply: \"%s\"%s\n", text,
                        shown < h.reply_len ? " ... (cut; more lines)" : "");
     }
@@ -502,7 +473,7 @@ bool conf_expect_error(const char *phrase, bool checksum)
     bool ok = strcmp(h.reply, want) == 0;
     if (!ok) {
         char text[200];
-        (void)escape(want, strlen(want), text, sizeof text);
+        (void)daran_recorder_escape(want, strlen(want), text, sizeof text);
         conf_fail("the reply \"%s\"", text);
     }
     if (!daran_recorder_no_effect(&h.rec)) {

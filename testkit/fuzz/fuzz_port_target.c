@@ -110,35 +110,6 @@ const daran_fuzz_totals_t *daran_fuzz_totals(void)
 
 /* ---- reporting ---- */
 
-/* A C-escaped copy of @p len bytes into @p out (NUL-terminated, cut). */
-static const char *escape(const char *s, size_t len, char *out, size_t size)
-{
-    size_t o = 0;
-    for (size_t i = 0; i < len && o + 5u < size; i++) {
-        unsigned char c = (unsigned char)s[i];
-        if (c == '\\' || c == '"') {
-            out[o++] = '\\';
-            out[o++] = (char)c;
-        } else if (c == '\r') {
-            out[o++] = '\\';
-            out[o++] = 'r';
-        } else if (c == '\n') {
-            out[o++] = '\\';
-            out[o++] = 'n';
-        } else if (c >= 0x20u && c <= 0x7eu) {
-            out[o++] = (char)c;
-        } else {
-            o += (size_t)snprintf(out + o, size - o, "\\x%02x", c);
-        }
-    }
-    if (o + 5u >= size && size > 4u) {
-        memcpy(out + size - 4u, "...", 3);
-        o = size - 1u;
-    }
-    out[o] = '\0';
-    return out;
-}
-
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((noreturn, format(printf, 1, 2)))
 #endif
@@ -155,9 +126,10 @@ static void violated(const char *fmt, ...)
     va_end(ap);
     fputc('\n', stderr);
     if (h->line != NULL) {
-        fprintf(stderr, "  request:   \"%s\"\n", escape(h->line, h->line_len, text, sizeof text));
+        fprintf(stderr, "  request:   \"%s\"\n",
+                daran_recorder_escape(h->line, h->line_len, text, sizeof text));
         fprintf(stderr, "  replies:   \"%s\"\n",
-                escape(h->replies, h->replies_len, text, sizeof text));
+                daran_recorder_escape(h->replies, h->replies_len, text, sizeof text));
         (void)daran_recorder_describe(&h->rec, text, sizeof text);
         fputs("  HAL calls: ", stderr);
         for (const char *c = text; *c != '\0'; c++) {
@@ -187,7 +159,7 @@ static void reply_sink(void *ctx, const char *line, size_t len)
     if (problem != NULL) {
         static char text[4 * DARAN_REPLY_MAX + 64];
         violated("invariant 4: the reply \"%s\" (%zu bytes) has %s",
-                 escape(line, len, text, sizeof text), len, problem);
+                 daran_recorder_escape(line, len, text, sizeof text), len, problem);
     }
     if (h->line == NULL) {
         violated("invariant 4: a reply written outside daran_poll()");

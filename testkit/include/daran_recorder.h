@@ -148,6 +148,12 @@ const char *daran_recorder_move_name(daran_move_kind_t kind);
 /** "SAVE_CONFIG", "ESTOP", ...; "?" outside the enum. */
 const char *daran_recorder_action_name(daran_action_t action);
 
+/** @p len bytes of @p text as a C string literal's body would write them
+ * (`\n`, `\r`, `\t`, `\"`, `\\`, `\xHH` for any other byte outside printable
+ * ASCII), NUL terminated in @p buf; when @p size runs out it ends in "...".
+ * Returns @p buf. For reports of lines and replies. */
+const char *daran_recorder_escape(const char *text, size_t len, char *buf, size_t size);
+
 /** One call as text ("set axis0.controller.config.pos_gain 20 -> ok"), NUL
  * terminated, cut to @p size. Returns the length it would have had. */
 size_t daran_call_describe(const daran_call_t *call, char *buf, size_t size);

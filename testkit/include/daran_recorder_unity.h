@@ -51,27 +51,6 @@
 /* ---- what the macros call; not for direct use ---- */
 
 /** @cond INTERNAL */
-static inline const char *daran_unity_escape(const char *text, size_t len, char *buf, size_t size)
-{
-    size_t k = 0;
-    for (size_t i = 0; i < len && k + 5u < size; i++) {
-        unsigned char c = (unsigned char)text[i];
-        if (c == '\n') {
-            buf[k++] = '\\';
-            buf[k++] = 'n';
-        } else if (c == '\r') {
-            buf[k++] = '\\';
-            buf[k++] = 'r';
-        } else if (c < 0x20u || c >= 0x7Fu) {
-            k += (size_t)snprintf(buf + k, size - k, "\\x%02X", c);
-        } else {
-            buf[k++] = (char)c;
-        }
-    }
-    buf[k] = '\0';
-    return buf;
-}
-
 /* Fail at the test's line with the expectation and what the recorder saw. */
 static inline void daran_unity_fail(const daran_recorder_t *rec, int line, const char *expected)
 {
@@ -84,7 +63,7 @@ static inline void daran_unity_fail(const daran_recorder_t *rec, int line, const
             *c = ';'; /* Unity prints one line per failure */
         }
     }
-    (void)daran_unity_escape(rec->out, rec->out_len, replies, sizeof replies);
+    (void)daran_recorder_escape(rec->out, rec->out_len, replies, sizeof replies);
     int len = snprintf(message, sizeof message, "expected %s; HAL calls: %s; replies: \"%s\"%s",
                        expected, calls, replies, rec->out_dropped > 0u ? " (cut)" : "");
     if (len < 0 || (size_t)len >= sizeof message) {
@@ -202,7 +181,7 @@ static inline void daran_unity_reply(const daran_recorder_t *rec, const char *ex
         static char want[1100];
         char text[1024];
         (void)snprintf(want, sizeof want, "the reply \"%s\"",
-                       daran_unity_escape(expected, strlen(expected), text, sizeof text));
+                       daran_recorder_escape(expected, strlen(expected), text, sizeof text));
         daran_unity_fail(rec, line, want);
     }
 }

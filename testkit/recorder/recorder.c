@@ -445,6 +445,40 @@ const char *daran_recorder_action_name(daran_action_t action)
 
 /* ---- describing (the only stdio) ---- */
 
+const char *daran_recorder_escape(const char *text, size_t len, char *buf, size_t size)
+{
+    static const char plain[] = "\n\r\t\"\\";
+    static const char named[] = "nrt\"\\";
+    size_t k = 0;
+    if (size < 4u) { /* no room for anything but the NUL */
+        if (size > 0u) {
+            buf[0] = '\0';
+        }
+        return buf;
+    }
+    /* Each step keeps room for "..." and the NUL after what it wrote. */
+    for (size_t i = 0; i < len; i++) {
+        unsigned char c = (unsigned char)text[i];
+        const char *special = c != 0u ? strchr(plain, c) : NULL;
+        size_t width = special != NULL ? 2u : (c < 0x20u || c >= 0x7Fu ? 4u : 1u);
+        if (k + width + 4u > size) {
+            memcpy(buf + k, "...", 3);
+            k += 3u;
+            break;
+        }
+        if (special != NULL) {
+            buf[k++] = '\\';
+            buf[k++] = named[special - plain];
+        } else if (width == 4u) {
+            k += (size_t)snprintf(buf + k, size - k, "\\x%02X", c);
+        } else {
+            buf[k++] = (char)c;
+        }
+    }
+    buf[k] = '\0';
+    return buf;
+}
+
 /* snprintf's result as a length, or 0 for an encoding error. */
 static size_t printed(int n)
 {

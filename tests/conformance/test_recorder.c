@@ -251,6 +251,21 @@ static void test_an_error_with_a_checksum_tail_is_that_error(void)
     TEST_ASSERT_DARAN_ERROR(&rec, "checksum mismatch");
 }
 
+/* The one escaper of the test kit's reports (Unity assertions, conformance
+ * and fuzz reports, the unit tests' mock). */
+static void test_escape_writes_a_c_literal_body_and_marks_a_cut(void)
+{
+    char buf[64];
+    TEST_ASSERT_EQUAL_STRING("t 1 \\\\\\\"x\\\" \\t\\r\\n\\x01\\xFF",
+                             daran_recorder_escape("t 1 \\\"x\" \t\r\n\x01\xff", 14, buf, sizeof buf));
+    TEST_ASSERT_EQUAL_STRING("", daran_recorder_escape("abc", 0, buf, sizeof buf));
+    char small[10];
+    TEST_ASSERT_EQUAL_STRING("abcdef...", daran_recorder_escape("abcdefghijklmnop", 16, small, sizeof small));
+    TEST_ASSERT_EQUAL_STRING("abcdef", daran_recorder_escape("abcdef", 6, small, sizeof small));
+    /* a cut never splits an escape */
+    TEST_ASSERT_EQUAL_STRING("\\x01...", daran_recorder_escape("\x01\x02\x03", 3, small, sizeof small));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -267,5 +282,6 @@ int main(void)
     RUN_TEST(test_calls_read_as_the_report_prints_them);
     RUN_TEST(test_each_assertion_fails_when_it_should);
     RUN_TEST(test_an_error_with_a_checksum_tail_is_that_error);
+    RUN_TEST(test_escape_writes_a_c_literal_body_and_marks_a_cut);
     return UNITY_END();
 }

@@ -374,19 +374,8 @@ const char *mock_escape(const char *s, size_t len)
 {
     static char slots[2][2048];
     static int turn;
-    char *o = slots[turn];
     turn ^= 1;
-    size_t k = 0;
-    for (size_t i = 0; i < len && k + 5 < sizeof slots[0]; i++) {
-        unsigned char c = (unsigned char)s[i];
-        if (c == '\n') { o[k++] = '\\'; o[k++] = 'n'; }
-        else if (c == '\r') { o[k++] = '\\'; o[k++] = 'r'; }
-        else if (c == '\t') { o[k++] = '\\'; o[k++] = 't'; }
-        else if (c < 0x20 || c >= 0x7f) k += (size_t)sprintf(o + k, "\\x%02X", c);
-        else o[k++] = (char)c;
-    }
-    o[k] = '\0';
-    return o;
+    return daran_recorder_escape(s, len, slots[turn], sizeof slots[0]);
 }
 
 /* ---- checks ---- */
