@@ -27,21 +27,21 @@ enum handler {
 /* X(word, min fields, max fields, flags, arg, handler, arguments for `h`
  * after the id: every command but r and w takes the motor id first, and `h`
  * prints it). t first: it is the command a host streams at 1 kHz. */
-#define SINGLE_MOTION_COMMANDS(X)                                                     \
-    X("t", 3, 5, 0, DARAN_SHAPE_FILTERED, HANDLER_MOTION, "pos [vel] [bw]")              \
-    X("q", 3, 5, 0, DARAN_SHAPE_TRAPEZOID, HANDLER_MOTION, "pos [vel] [acc]")             \
-    X("p", 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, HANDLER_MOTION, "pos [vel_ff] [torque_ff]")    \
-    X("v", 3, 5, 0, DARAN_SHAPE_VELOCITY, HANDLER_MOTION, "vel [param] [mode]")          \
-    X("c", 3, 5, 0, DARAN_SHAPE_TORQUE, HANDLER_MOTION, "torque [param] [mode]")       \
+#define SINGLE_MOTION_COMMANDS(X)                                                               \
+    X("t", 3, 5, 0, DARAN_SHAPE_FILTERED, HANDLER_MOTION, "pos [vel] [bw]")                     \
+    X("q", 3, 5, 0, DARAN_SHAPE_TRAPEZOID, HANDLER_MOTION, "pos [vel] [acc]")                   \
+    X("p", 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, HANDLER_MOTION, "pos [vel_ff] [torque_ff]")        \
+    X("v", 3, 5, 0, DARAN_SHAPE_VELOCITY, HANDLER_MOTION, "vel [param] [mode]")                 \
+    X("c", 3, 5, 0, DARAN_SHAPE_TORQUE, HANDLER_MOTION, "torque [param] [mode]")                \
     X("d", 7, 7, 0, DARAN_SHAPE_IMPEDANCE, HANDLER_MOTION, "pdes vdes tff kp kd")
 
 #if DARAN_ENABLE_MULTI_MOTOR
-#define MULTI_MOTION_COMMANDS(X)                                       \
-    X("ms", 2 + DARAN_PRESET_VALUES, 2 + DARAN_PRESET_VALUES, 0, 0, HANDLER_MS, "p1 p2 p3") \
-    X("mt", 3, 3, 0, DARAN_SHAPE_FILTERED, HANDLER_START, "rel")           \
-    X("mq", 3, 3, 0, DARAN_SHAPE_TRAPEZOID, HANDLER_START, "rel")           \
-    X("mp", 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, HANDLER_START, "rel")           \
-    X("mv", 2, 2, 0, DARAN_SHAPE_VELOCITY, HANDLER_START, "")               \
+#define MULTI_MOTION_COMMANDS(X)                                                                \
+    X("ms", 2 + DARAN_PRESET_VALUES, 2 + DARAN_PRESET_VALUES, 0, 0, HANDLER_MS, "p1 p2 p3")     \
+    X("mt", 3, 3, 0, DARAN_SHAPE_FILTERED, HANDLER_START, "rel")                                \
+    X("mq", 3, 3, 0, DARAN_SHAPE_TRAPEZOID, HANDLER_START, "rel")                               \
+    X("mp", 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, HANDLER_START, "rel")                             \
+    X("mv", 2, 2, 0, DARAN_SHAPE_VELOCITY, HANDLER_START, "")                                   \
     X("mc", 2, 2, 0, DARAN_SHAPE_TORQUE, HANDLER_START, "")
 #else
 #define MULTI_MOTION_COMMANDS(X)
@@ -63,11 +63,11 @@ enum handler {
 #define HELP_COMMAND(X)
 #endif
 
-#define QUERY_COMMANDS(X)                                                  \
-    X("f", 2, 2, READ, 0, HANDLER_FEEDBACK, "")                                 \
-    X("g", 2, 2, READ, 0, HANDLER_POWER, "")                                 \
-    X("i", 2, 2, READ, 0, HANDLER_IDENTITY, "")                                 \
-    X("e", 2, 2, READ, 0, HANDLER_ERRORS, "")                                 \
+#define QUERY_COMMANDS(X)                                                                       \
+    X("f", 2, 2, READ, 0, HANDLER_FEEDBACK, "")                                                 \
+    X("g", 2, 2, READ, 0, HANDLER_POWER, "")                                                    \
+    X("i", 2, 2, READ, 0, HANDLER_IDENTITY, "")                                                 \
+    X("e", 2, 2, READ, 0, HANDLER_ERRORS, "")                                                   \
     X("u", 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, HANDLER_ACTION, "")
 
 #define DARAN_COMMANDS(X)                                                  \

@@ -82,7 +82,9 @@ static const daran_prop_t error_registers[] = {
 #define ERROR_REGISTER_COUNT (sizeof error_registers / sizeof error_registers[0])
 
 /* The bit of axis0.error that summarises each register after the first
- * (daran_hal.h); 31 for can.error, which no bit summarises. */
+ * (daran_hal.h): DARAN_FLAG_MOTOR_FAILED, _ENCODER_FAILED,
+ * _CONTROLLER_FAILED, _OVERTEMP for both thermistors; 31 for can.error,
+ * which no bit summarises. Bit numbers, not the masks: a byte each. */
 static const uint8_t summary_bit[ERROR_REGISTER_COUNT - 1u] = {6, 8, 9, 18, 18, 31};
 
 daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *request)
