@@ -14,7 +14,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 repo=$(pwd)
-start=$SECONDS
 
 need=()
 command -v doxygen >/dev/null 2>&1 || need+=(doxygen)
@@ -26,27 +25,8 @@ if [ ${#need[@]} -gt 0 ]; then
   apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
 fi
 
-work=$(mktemp -d "${TMPDIR:-/tmp}/daran-package.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-export CMAKE_GENERATOR=Ninja
-jobs=(-j 2)
-summary=()
-
-# step NAME COMMAND...: run quietly into a log; on failure show the log and stop.
-step() {
-  local name=$1
-  shift
-  local t0=$SECONDS
-  if "$@" >"$work/step.log" 2>&1; then
-    summary+=("PASS  $name ($((SECONDS - t0)) s)")
-  else
-    echo "50-package: FAIL $name; its output:"
-    sed 's/^/    /' "$work/step.log"
-    printf '%s\n' "${summary[@]}" "FAIL  $name"
-    echo "50-package: FAILED after $((SECONDS - start)) s"
-    exit 1
-  fi
-}
+source tools/ci-steps.bash
+ci_steps_begin 50-package
 
 doxygen_clean() {
   # WARN_AS_ERROR=YES already fails the run; an empty log proves it said nothing.
@@ -207,5 +187,4 @@ step "config (e): lower limits: 32-byte lines, 16-byte ring, id 1 only, no help,
   "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=32;DARAN_RX_RING_SIZE=16;DARAN_MOTOR_ID_MAX=1;DARAN_ENABLE_HELP=0;DARAN_ENABLE_MULTI_MOTOR=0" \
   "-DDARAN_TEST_EXPECT=line_max=32;ring=16;motor_id_max=1;help=0;multi=0"
 
-printf '%s\n' "${summary[@]}"
-echo "50-package: ${#summary[@]} steps passed in $((SECONDS - start)) s"
+ci_steps_end

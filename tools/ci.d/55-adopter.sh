@@ -15,27 +15,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 repo=$(pwd)
-start=$SECONDS
 
-work=$(mktemp -d "${TMPDIR:-/tmp}/daran-adopter.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-export CMAKE_GENERATOR=Ninja
-jobs=(-j 2)
-summary=()
-
-step() {
-  local name=$1
-  shift
-  local t0=$SECONDS
-  if "$@" >"$work/step.log" 2>&1; then
-    summary+=("PASS  $name ($((SECONDS - t0)) s)")
-  else
-    echo "55-adopter: FAIL $name; its output:"
-    sed 's/^/    /' "$work/step.log"
-    printf '%s\n' "${summary[@]}" "FAIL  $name"
-    exit 1
-  fi
-}
+source tools/ci-steps.bash
+ci_steps_begin 55-adopter
 
 prefix="$work/prefix"
 install_package() {
@@ -71,5 +53,4 @@ adopter_subdirectory() {
 }
 step "adopter through add_subdirectory of the source tree: every test" adopter_subdirectory
 
-printf '%s\n' "${summary[@]}"
-echo "55-adopter: ${#summary[@]} steps passed in $((SECONDS - start)) s"
+ci_steps_end
