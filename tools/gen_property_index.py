@@ -73,59 +73,62 @@ def read_omitted(path):
     return set(re.findall(r"X\(\s*(\w+)\s*\)", body)) if body else set()
 
 
-# Where each row and range came from, so a refusal names the adopter's
-# header and row rather than the library's list.
+# Where each row ("row ID") and range ("range NAME") came from, so a refusal
+# names the adopter's header and row rather than the library's list.
 ORIGIN = {}
 
 
-def refuse(ident, why):
-    """Stop with a message naming the file and the row (or option) at fault."""
-    where = ORIGIN.get(ident)
+def refuse(key, why):
+    """Stop with a message naming the file and the row or range (key) at fault."""
+    where = ORIGIN.get(key)
     if where:
-        sys.exit("gen_property_index: %s: row %s: %s" % (where, ident, why))
-    sys.exit("gen_property_index: %s: %s" % (ident, why))
+        sys.exit("gen_property_index: %s: %s: %s" % (where, key, why))
+    sys.exit("gen_property_index: %s: %s" % (key, why))
 
 
 RANGE_RE = re.compile(r'X\(\s*(\w+)\s*,\s*((?:"[^"]*"|\s|DARAN_RANGE_STR\(\s*\w+\s*\))+)\)')
 NUMBER_RE = re.compile(r"^-?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
+INTEGER_RE = re.compile(r"^-?\d+$")
+OPTION_RE = re.compile(r"^\$\w+$")  # an option's value, e.g. $DARAN_MOTOR_ID_MAX
 
 
 def read_ranges(path, name):
     """[(NAME, text)] of `#define name(X)` in path; a DARAN_RANGE_STR(MACRO)
-    piece is kept as {MACRO} (its value is the core's business)."""
+    piece is kept as $MACRO: an integer option whose value is the core's
+    business."""
     body = macro_body(open(path, encoding="ascii").read(), name)
     if body is None:
         return []
     ranges = []
     for ident, rest in RANGE_RE.findall(body):
         pieces = re.findall(r'"([^"]*)"|DARAN_RANGE_STR\(\s*(\w+)\s*\)', rest)
-        ranges.append((ident, "".join(text if text or not macro else "{%s}" % macro
+        ranges.append((ident, "".join(text if text or not macro else "$" + macro
                                       for text, macro in pieces)))
     return ranges
 
 
 def check_range(ident, text, typ):
-    """Refuse a range the core cannot check for a row of type typ."""
+    """Refuse a range the core cannot check for row ident of type typ."""
+    row = "row " + ident
     if text in ("", ">=0", ">0", "<=0"):
         return
-    if "{" in text and "}" in text and text.startswith("1.."):
-        if typ == "F32":
-            refuse(ident, "an f32 row takes a sign condition or an interval lo..hi, not %r" % text)
-        return  # the node id range: its upper end is an option
     if ".." in text:
         low, _, high = text.partition("..")
-        if not NUMBER_RE.match(low) or not NUMBER_RE.match(high):
-            refuse(ident, "range %r: both ends of lo..hi must be numbers" % text)
-        if float(low) > float(high):
-            refuse(ident, "range %r: lo is above hi" % text)
-        if typ != "F32" and not (re.match(r"^-?\d+$", low) and re.match(r"^-?\d+$", high)):
-            refuse(ident, "range %r: an integer row takes integer ends" % text)
+        ends = (low, high)
+        if not all(NUMBER_RE.match(e) or OPTION_RE.match(e) for e in ends):
+            refuse(row, "range %r: both ends of lo..hi must be numbers" % text)
+        if typ == "F32" and any(OPTION_RE.match(e) for e in ends):
+            refuse(row, "range %r: an f32 row takes decimal ends" % text)
+        if typ != "F32" and not all(INTEGER_RE.match(e) or OPTION_RE.match(e) for e in ends):
+            refuse(row, "range %r: an integer row takes integer ends" % text)
+        if all(NUMBER_RE.match(e) for e in ends) and float(low) > float(high):
+            refuse(row, "range %r: lo is above hi" % text)
         return
     if typ == "F32":
-        refuse(ident, "an f32 row takes a sign condition or an interval lo..hi, not %r" % text)
+        refuse(row, "an f32 row takes a sign condition or an interval lo..hi, not %r" % text)
     items = text.strip("{}").replace("|", ",").split(",")
-    if not all(re.match(r"^-?\d+$", v) for v in items):
-        refuse(ident, "range %r: a set lists integers" % text)
+    if not all(INTEGER_RE.match(v) for v in items):
+        refuse(row, "range %r: a set lists integers" % text)
 
 
 def fnv(seed, scope, data):
@@ -191,28 +194,28 @@ def generate(rows, omit, ranges):
                  " ".join(unknown))
     if len(set(ids)) != len(ids):
         twice = sorted({i for i in ids if ids.count(i) > 1})
-        refuse(twice[0], "the property id appears twice")
+        refuse("row " + twice[0], "the property id appears twice")
     range_text = dict(ranges)
     if len(ranges) > 32:
-        refuse(ranges[32][0], "at most 32 ranges in all (5 bits of the attribute word)")
+        refuse("range " + ranges[32][0], "at most 32 ranges in all (5 bits of the attribute word)")
     for ident, path, scope, typ, access, rng, unit in rows:
         # what src/commands_property.c can check for each type
         if rng not in range_text:
-            refuse(ident, "range %s is neither in DARAN_RANGE_LIST nor in DARAN_PORT_RANGE_LIST" % rng)
+            refuse("row " + ident, "range %s is neither in DARAN_RANGE_LIST nor in DARAN_PORT_RANGE_LIST" % rng)
         if typ == "BOOL" and rng != "BOOL":
-            refuse(ident, "a bool row takes the range BOOL, not %s" % rng)
+            refuse("row " + ident, "a bool row takes the range BOOL, not %s" % rng)
         if typ == "U64" and access == "RW" and rng != "NONE":
-            refuse(ident, "a writable u64 row takes no range (NONE), not %s" % rng)
+            refuse("row " + ident, "a writable u64 row takes no range (NONE), not %s" % rng)
         if typ != "BOOL":
             check_range(ident, range_text[rng], typ)
         if len(path) > 64:
-            refuse(ident, "path %s: paths are 64 characters at most (DARAN_PATH_MAX)" % path)
+            refuse("row " + ident, "path %s: paths are 64 characters at most (DARAN_PATH_MAX)" % path)
     kept = [i for i, r in enumerate(rows) if r[0] not in omit]
     seen = {}
     for i in kept:
         key = (rows[i][2], rows[i][1])
         if key in seen:
-            refuse(rows[i][0], "path %s appears twice (also row %s): a port row must not reuse a "
+            refuse("row " + rows[i][0], "path %s appears twice (also row %s): a port row must not reuse a "
                                "vendor path; omit the vendor row first" % (rows[i][1], seen[key]))
         seen[key] = rows[i][0]
 
@@ -236,7 +239,7 @@ def generate(rows, omit, ranges):
     for i in kept:
         parts = words_of(rows[i][1])
         if len(parts) > MAX_WORDS or "" in parts:
-            refuse(rows[i][0], "path %s: 1..%d non-empty words" % (rows[i][1], MAX_WORDS))
+            refuse("row " + rows[i][0], "path %s: 1..%d non-empty words" % (rows[i][1], MAX_WORDS))
         keys.append((1 if rows[i][2] == "AXIS" else 0, rows[i][1].encode()))
     seed, bucket_bits, displacement, taken, slots = build_hash(keys)
     if len(rows) >= 0xFFFF:
@@ -425,7 +428,7 @@ def main():
     vendor = {r[0] for r in rows}
     vendor_ranges = {r[0] for r in ranges}
     for r in rows:
-        ORIGIN[r[0]] = "%s (DARAN_PROPERTY_LIST)" % args.list
+        ORIGIN["row " + r[0]] = "%s (DARAN_PROPERTY_LIST)" % args.list
     for r in ranges:
         ORIGIN["range " + r[0]] = "%s (DARAN_RANGE_LIST)" % args.list
     if args.config:
@@ -434,13 +437,14 @@ def main():
             if r[0] in vendor_ranges:
                 sys.exit("gen_property_index: %s (DARAN_PORT_RANGE_LIST): range %s reuses a vendor "
                          "range name" % (args.config, r[0]))
+            ORIGIN["range " + r[0]] = "%s (DARAN_PORT_RANGE_LIST)" % args.config
         ranges += port_ranges
         port_rows = read_rows(args.config, "DARAN_PORT_PROPERTY_LIST", required=False)
         for r in port_rows:
             if r[0] in vendor:
                 sys.exit("gen_property_index: %s (DARAN_PORT_PROPERTY_LIST): row %s reuses a vendor id"
                          % (args.config, r[0]))
-            ORIGIN[r[0]] = "%s (DARAN_PORT_PROPERTY_LIST)" % args.config
+            ORIGIN["row " + r[0]] = "%s (DARAN_PORT_PROPERTY_LIST)" % args.config
         rows += port_rows
         port_omit = read_omitted(args.config)
         unknown = sorted(port_omit - vendor)
