@@ -25,7 +25,8 @@ set(DARAN_STRICT_WARNINGS
 set_property(GLOBAL PROPERTY DARAN_CORE_SOURCES
   checksum.c command_table.c commands_common.c commands_motion.c commands_multi.c
   commands_property.c commands_query.c commands_system.c discovery.c drive.c framer.c
-  number.c port_commands.c property_table.c reply.c result.c rx_ring.c telemetry.c version.c)
+  hal.c number.c port_commands.c property_table.c reply.c result.c rx_ring.c telemetry.c text.c
+  version.c)
 set_property(GLOBAL PROPERTY DARAN_STRICT_WARNINGS ${DARAN_STRICT_WARNINGS})
 
 # Compile <target> with the core's warning set, as errors.

@@ -1,5 +1,6 @@
 /* The optional "*N" field: XOR of every byte before the '*'. */
-#include "internal.h"
+#include "checksum.h"
+#include "line.h"
 
 uint8_t daran_xor(const char *text, size_t len)
 {

@@ -1,24 +1,13 @@
 /* The command table: the only place that knows which commands exist, their
  * field counts, handlers and help text. One list, DARAN_COMMANDS, makes both
  * the rows and the `h` text, so they cannot drift apart. */
-#include "internal.h"
+#include "command.h"
+#include "compiler.h"
+#include "handlers.h"
+#include "reply.h"
+#include "text.h"
 
 #include "daran_port.h"
-
-enum handler {
-    HANDLER_MOTION,
-    HANDLER_MS,
-    HANDLER_START,
-    HANDLER_R,
-    HANDLER_W,
-    HANDLER_ACTION,
-    HANDLER_H,
-    HANDLER_FEEDBACK,
-    HANDLER_POWER,
-    HANDLER_IDENTITY,
-    HANDLER_ERRORS,
-    HANDLER_COUNT
-};
 
 #define READ DARAN_CMD_READ
 #define PATH DARAN_CMD_PATH
@@ -28,47 +17,47 @@ enum handler {
  * after the id: every command but r and w takes the motor id first, and `h`
  * prints it). t first: it is the command a host streams at 1 kHz. */
 #define SINGLE_MOTION_COMMANDS(X)                                                               \
-    X("t", 3, 5, 0, DARAN_SHAPE_FILTERED, HANDLER_MOTION, "pos [vel] [bw]")                     \
-    X("q", 3, 5, 0, DARAN_SHAPE_TRAPEZOID, HANDLER_MOTION, "pos [vel] [acc]")                   \
-    X("p", 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, HANDLER_MOTION, "pos [vel_ff] [torque_ff]")        \
-    X("v", 3, 5, 0, DARAN_SHAPE_VELOCITY, HANDLER_MOTION, "vel [param] [mode]")                 \
-    X("c", 3, 5, 0, DARAN_SHAPE_TORQUE, HANDLER_MOTION, "torque [param] [mode]")                \
-    X("d", 7, 7, 0, DARAN_SHAPE_IMPEDANCE, HANDLER_MOTION, "pdes vdes tff kp kd")
+    X("t", 3, 5, 0, DARAN_SHAPE_FILTERED, daran_cmd_motion, "pos [vel] [bw]")                     \
+    X("q", 3, 5, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_motion, "pos [vel] [acc]")                   \
+    X("p", 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_motion, "pos [vel_ff] [torque_ff]")        \
+    X("v", 3, 5, 0, DARAN_SHAPE_VELOCITY, daran_cmd_motion, "vel [param] [mode]")                 \
+    X("c", 3, 5, 0, DARAN_SHAPE_TORQUE, daran_cmd_motion, "torque [param] [mode]")                \
+    X("d", 7, 7, 0, DARAN_SHAPE_IMPEDANCE, daran_cmd_motion, "pdes vdes tff kp kd")
 
 #if DARAN_ENABLE_MULTI_MOTOR
 #define MULTI_MOTION_COMMANDS(X)                                                                \
-    X("ms", 2 + DARAN_PRESET_VALUES, 2 + DARAN_PRESET_VALUES, 0, 0, HANDLER_MS, "p1 p2 p3")     \
-    X("mt", 3, 3, 0, DARAN_SHAPE_FILTERED, HANDLER_START, "rel")                                \
-    X("mq", 3, 3, 0, DARAN_SHAPE_TRAPEZOID, HANDLER_START, "rel")                               \
-    X("mp", 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, HANDLER_START, "rel")                             \
-    X("mv", 2, 2, 0, DARAN_SHAPE_VELOCITY, HANDLER_START, "")                                   \
-    X("mc", 2, 2, 0, DARAN_SHAPE_TORQUE, HANDLER_START, "")
+    X("ms", 2 + DARAN_PRESET_VALUES, 2 + DARAN_PRESET_VALUES, 0, 0, daran_cmd_ms, "p1 p2 p3")     \
+    X("mt", 3, 3, 0, DARAN_SHAPE_FILTERED, daran_cmd_start, "rel")                                \
+    X("mq", 3, 3, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_start, "rel")                               \
+    X("mp", 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_start, "rel")                             \
+    X("mv", 2, 2, 0, DARAN_SHAPE_VELOCITY, daran_cmd_start, "")                                   \
+    X("mc", 2, 2, 0, DARAN_SHAPE_TORQUE, daran_cmd_start, "")
 #else
 #define MULTI_MOTION_COMMANDS(X)
 #endif
 
 #define PROPERTY_AND_SYSTEM_COMMANDS(X)                                      \
-    X("r", 2, 3, READ_PATH, 0, HANDLER_R, "path [id]")                       \
-    X("w", 3, 4, PATH, 0, HANDLER_W, "path value [id]")                      \
-    X("ss", 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, HANDLER_ACTION, "")         \
-    X("se", 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, HANDLER_ACTION, "")        \
-    X("sr", 2, 2, 0, DARAN_ACTION_REBOOT, HANDLER_ACTION, "")              \
-    X("sc", 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, HANDLER_ACTION, "")        \
-    X("sz", 2, 2, 0, DARAN_ACTION_SET_ZERO, HANDLER_ACTION, "")            \
-    X("st", 2, 2, 0, DARAN_ACTION_ESTOP, HANDLER_ACTION, "")
+    X("r", 2, 3, READ_PATH, 0, daran_cmd_r, "path [id]")                       \
+    X("w", 3, 4, PATH, 0, daran_cmd_w, "path value [id]")                      \
+    X("ss", 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, daran_cmd_action, "")         \
+    X("se", 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, daran_cmd_action, "")        \
+    X("sr", 2, 2, 0, DARAN_ACTION_REBOOT, daran_cmd_action, "")              \
+    X("sc", 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, daran_cmd_action, "")        \
+    X("sz", 2, 2, 0, DARAN_ACTION_SET_ZERO, daran_cmd_action, "")            \
+    X("st", 2, 2, 0, DARAN_ACTION_ESTOP, daran_cmd_action, "")
 
 #if DARAN_ENABLE_HELP
-#define HELP_COMMAND(X) X("h", 2, 4, READ, 0, HANDLER_H, "[properties [prefix]]")
+#define HELP_COMMAND(X) X("h", 2, 4, READ, 0, help_command, "[properties [prefix]]")
 #else
 #define HELP_COMMAND(X)
 #endif
 
 #define QUERY_COMMANDS(X)                                                                       \
-    X("f", 2, 2, READ, 0, HANDLER_FEEDBACK, "")                                                 \
-    X("g", 2, 2, READ, 0, HANDLER_POWER, "")                                                    \
-    X("i", 2, 2, READ, 0, HANDLER_IDENTITY, "")                                                 \
-    X("e", 2, 2, READ, 0, HANDLER_ERRORS, "")                                                   \
-    X("u", 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, HANDLER_ACTION, "")
+    X("f", 2, 2, READ, 0, daran_cmd_feedback, "")                                                 \
+    X("g", 2, 2, READ, 0, daran_cmd_power, "")                                                    \
+    X("i", 2, 2, READ, 0, daran_cmd_identity, "")                                                 \
+    X("e", 2, 2, READ, 0, daran_cmd_errors, "")                                                   \
+    X("u", 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, daran_cmd_action, "")
 
 #define DARAN_COMMANDS(X)                                                  \
     SINGLE_MOTION_COMMANDS(X) MULTI_MOTION_COMMANDS(X)                     \
@@ -88,13 +77,15 @@ DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(FIELDS_WRONG)) == 0, command_field_counts_
 DARAN_STATIC_ASSERT((0 SINGLE_MOTION_COMMANDS(MOTION_VALUES_WRONG)) == 0,
                     motion_values_fit_the_handler);
 #undef MOTION_VALUES_WRONG
-#define W_AND_H_WRONG(word, min, max, flags, arg, handler, help) \
-    | ((handler) == HANDLER_W && (min) < 3 ? 1 : 0) | ((handler) == HANDLER_H && (max) > 4 ? 1 : 0)
-DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(W_AND_H_WRONG)) == 0, w_has_a_value_and_h_at_most_a_prefix);
-#undef W_AND_H_WRONG
+#define W_WRONG(word, min, max, flags, arg, handler, help) | ((flags) == PATH && (min) < 3 ? 1 : 0)
+DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(W_WRONG)) == 0, w_has_a_value);
+#undef W_WRONG
+#define H_WRONG(word, min, max, flags, arg, handler, help) | ((max) > 4 ? 1 : 0)
+DARAN_STATIC_ASSERT((0 HELP_COMMAND(H_WRONG)) == 0, h_has_at_most_a_prefix);
+#undef H_WRONG
 
 #define COMMAND_ROW(word, min, max, flags, arg, handler, help) \
-    {word, (uint8_t)((min) << 4 | (max)), flags, (uint8_t)(arg), handler},
+    {word, (uint8_t)((min) << 4 | (max)), flags, (uint8_t)(arg)},
 static const daran_command_t commands[] = {DARAN_COMMANDS(COMMAND_ROW)};
 #undef COMMAND_ROW
 
@@ -124,7 +115,7 @@ static void help_line(daran_drive_t *drive, const char *word, size_t len, bool i
     daran_reply_end(drive);
 }
 
-static daran_result_t command_h(daran_drive_t *drive, const daran_request_t *request)
+static daran_result_t help_command(daran_drive_t *drive, const daran_request_t *request)
 {
     if (request->fields->count > 2u) {
         return daran_cmd_discovery(drive, request);
@@ -134,54 +125,32 @@ static daran_result_t command_h(daran_drive_t *drive, const daran_request_t *req
         const daran_command_t *command = &commands[i];
         help_line(drive, command->word, command->word[1] != '\0' ? 2u : 1u,
                   (command->flags & DARAN_CMD_PATH) == 0u, arguments);
-        while (*arguments++ != '\0') {
-        }
+        arguments = daran_nth_text(arguments, 1);
     }
     for (size_t i = 0; i < drive->port_command_count; i++) {
         const daran_port_command_t *command = &drive->port_commands[i];
-        const char *word = command->word;
-        size_t len = 0;
-        while (word[len] != '\0') {
-            len++;
-        }
-        help_line(drive, word, len, true, command->help);
+        help_line(drive, command->word, daran_text_len(command->word), true, command->help);
     }
     return DARAN_OK;
 }
 #endif
 
-static daran_handler_fn const handlers[HANDLER_COUNT] = {
-    [HANDLER_MOTION] = daran_cmd_motion,
-#if DARAN_ENABLE_MULTI_MOTOR
-    [HANDLER_MS] = daran_cmd_ms,
-    [HANDLER_START] = daran_cmd_start,
-#endif
-    [HANDLER_R] = daran_cmd_r,
-    [HANDLER_W] = daran_cmd_w,
-    [HANDLER_ACTION] = daran_cmd_action,
-#if DARAN_ENABLE_HELP
-    [HANDLER_H] = command_h,
-#endif
-    [HANDLER_FEEDBACK] = daran_cmd_feedback,
-    [HANDLER_POWER] = daran_cmd_power,
-    [HANDLER_IDENTITY] = daran_cmd_identity,
-    [HANDLER_ERRORS] = daran_cmd_errors,
-};
-
-static char lower(char c)
-{
-    return (c >= 'A' && c <= 'Z') ? (char)(c - 'A' + 'a') : c;
-}
+/* Row i's handler, from the same list: a row names its handler, and a row
+ * stays 5 bytes (a pointer in it would pad it to 12). */
+typedef daran_result_t (*handler_fn)(daran_drive_t *drive, const daran_request_t *request);
+#define HANDLER_OF(word, min, max, flags, arg, handler, help) handler,
+static handler_fn const command_handlers[] = {DARAN_COMMANDS(HANDLER_OF)};
+#undef HANDLER_OF
 
 const daran_command_t *daran_find_command(const daran_field_t *word)
 {
     if (word->len == 0u || word->len > 2u) {
         return NULL;
     }
-    char first = lower(word->text[0]);
-    char second = word->len == 2u ? lower(word->text[1]) : '\0';
     for (size_t i = 0; i < COMMAND_COUNT; i++) {
-        if (commands[i].word[0] == first && commands[i].word[1] == second) {
+        const char *row = commands[i].word;
+        if (daran_letter_is(word->text[0], row[0]) &&
+            (word->len == 2u ? daran_letter_is(word->text[1], row[1]) : row[1] == '\0')) {
             return &commands[i];
         }
     }
@@ -190,5 +159,5 @@ const daran_command_t *daran_find_command(const daran_field_t *word)
 
 daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *request)
 {
-    return handlers[request->command->handler](drive, request);
+    return command_handlers[request->command - commands](drive, request);
 }

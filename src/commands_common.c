@@ -1,6 +1,8 @@
-/* What every command handler needs: values from fields, the drive's state,
- * and the one road to the HAL's move(). */
-#include "internal.h"
+/* What every command handler needs: values from fields and the drive's
+ * state. */
+#include "handlers.h"
+#include "hal.h"
+#include "number.h"
 
 bool daran_is_finite(float value)
 {
@@ -44,18 +46,6 @@ daran_result_t daran_field_motor(const daran_field_t *field, uint8_t *out)
     return DARAN_OK;
 }
 
-daran_result_t daran_from_hal(daran_result_t result)
-{
-    /* A HAL may return anything; what is not a protocol error is a fault (D26). */
-    return (unsigned)result < (unsigned)DARAN_ERR_BAD_ARGUMENT ? result : DARAN_ERR_MOTOR_FAULT;
-}
-
-daran_result_t daran_get(daran_drive_t *drive, daran_prop_t prop, daran_value_t *out)
-{
-    out->u64 = 0;
-    return daran_from_hal(drive->hal->get(drive->hal_ctx, prop, out));
-}
-
 daran_result_t daran_check_motion_allowed(daran_drive_t *drive)
 {
     daran_value_t value;
@@ -74,15 +64,4 @@ daran_result_t daran_check_motion_allowed(daran_drive_t *drive)
         return result;
     }
     return value.u32 == DARAN_STATE_CLOSED_LOOP ? DARAN_OK : DARAN_ERR_MOTOR_IDLE;
-}
-
-daran_result_t daran_start_move(daran_drive_t *drive, const daran_move_t *move)
-{
-    daran_result_t result = daran_from_hal(drive->hal->move(drive->hal_ctx, move));
-    if (result == DARAN_OK) {
-        /* The move is done; a feed that fails cannot undo it, and the drive's
-         * own watchdog will say so if it matters (D22). */
-        (void)drive->hal->action(drive->hal_ctx, DARAN_ACTION_FEED_WATCHDOG);
-    }
-    return result;
 }

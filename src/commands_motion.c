@@ -3,7 +3,10 @@
  * checked; one function turns values into a move, so `mt` is exactly `t`,
  * `mv` exactly `v`, and so on. Every value is checked before the drive's
  * state, and the state before the one HAL move. */
-#include "internal.h"
+#include "compiler.h"
+#include "hal.h"
+#include "handlers.h"
+#include "number.h"
 
 enum slot { SLOT_POS, SLOT_VEL, SLOT_TORQUE, SLOT_RATE, SLOT_KP, SLOT_KD, SLOT_PARAM, SLOT_MODE,
             SLOT_IGNORED, SLOT_COUNT };

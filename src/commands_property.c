@@ -1,7 +1,11 @@
 /* `r` and `w`: property access through the table. The dispatcher has
  * already found the property; here its value is formatted or parsed and
  * range-checked against the table row. */
-#include "internal.h"
+#include "handlers.h"
+#include "hal.h"
+#include "number.h"
+#include "property.h"
+#include "telemetry.h"
 
 #include "property_features.h"
 
@@ -100,5 +104,5 @@ daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)
             return result;
         }
     }
-    return daran_from_hal(drive->hal->set(drive->hal_ctx, request->prop, value));
+    return daran_set(drive, request->prop, value);
 }

@@ -1,6 +1,9 @@
 /* Queries f g i e (and `r`'s reply): each answers with values read from the
  * HAL. `h` lives with the command table, whose text it prints. */
-#include "internal.h"
+#include "handlers.h"
+#include "hal.h"
+#include "property.h"
+#include "reply.h"
 
 daran_result_t daran_append_properties(daran_drive_t *drive, const daran_prop_t *props,
                                        size_t count)

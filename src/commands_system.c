@@ -1,11 +1,12 @@
 /* System and watchdog commands: ss se sr sc sz st u. Each is one HAL action,
  * silent on success. */
-#include "internal.h"
+#include "handlers.h"
+#include "hal.h"
 
 daran_result_t daran_cmd_action(daran_drive_t *drive, const daran_request_t *request)
 {
     daran_action_t action = (daran_action_t)request->command->arg;
-    daran_result_t result = daran_from_hal(drive->hal->action(drive->hal_ctx, action));
+    daran_result_t result = daran_act(drive, action);
     if (result == DARAN_OK && action == DARAN_ACTION_REBOOT) {
         drive->has_preset = 0; /* a reboot forgets what RAM held (D16) */
     }

@@ -1,7 +1,10 @@
 /* `h id properties [prefix]`: every property the drive knows, one line each
  * in path order, from the same table that lookup and range checks use (so
  * it cannot drift from them), then `end` (protocol.md 11.1). */
-#include "internal.h"
+#include "handlers.h"
+#include "property.h"
+#include "reply.h"
+#include "text.h"
 
 #if DARAN_ENABLE_HELP
 
@@ -57,12 +60,8 @@ daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *
         if (!reply_starts_with(drive, &prefix)) {
             continue;
         }
-        const char *type = type_names;
-        for (unsigned n = DARAN_PROPERTY_TYPE(row); n > 0u; n--) {
-            type += 4; /* every name but the last takes 3 letters and a NUL */
-        }
         daran_reply_space(drive);
-        daran_reply_cstr(drive, type);
+        daran_reply_cstr(drive, daran_nth_text(type_names, DARAN_PROPERTY_TYPE(row)));
         daran_reply_text(drive, DARAN_PROPERTY_ACCESS(row) == DARAN_ACCESS_RW ? " rw " : " ro ", 4);
         daran_reply_cstr(drive, daran_unit_text(row));
         reply_range(drive, row);

@@ -1,9 +1,20 @@
-/* A drive instance and the road a framed line takes through the core: the
+/* A drive instance and the road a line takes through the core. Both entry
+ * roads start here: daran_poll() takes bytes from the ring, and
+ * daran_process_line() a whole line; each goes through the framer, then the
  * framer's verdict -> checksum -> command table -> addressing -> handler ->
  * reply. This file runs the road; no stage calls back into it. */
-#include "internal.h"
-
+#include "checksum.h"
+#include "command.h"
 #include "daran_port.h"
+#include "framer.h"
+#include "hal.h"
+#include "handlers.h"
+#include "line.h"
+#include "property.h"
+#include "reply.h"
+#include "rx_ring.h"
+
+static daran_result_t run_framed_line(daran_drive_t *drive);
 
 daran_result_t daran_init_checked(daran_drive_t *drive, uint32_t build_check,
                                   const daran_hal_t *hal, void *hal_ctx, daran_write_fn write,
@@ -50,11 +61,33 @@ daran_result_t daran_process_line(daran_drive_t *drive, const char *text, size_t
     if (ended || taken < len) {
         drive->line_flags |= DARAN_LINE_INVALID_BYTE;
     }
-    daran_result_t result = daran_run_framed_line(drive);
+    daran_result_t result = run_framed_line(drive);
     if (interrupted) {
         drive->line_flags = DARAN_LINE_DAMAGED;
     }
     return result;
+}
+
+size_t daran_poll(daran_drive_t *drive)
+{
+    /* The bytes queued now, and no more: a producer that keeps sending
+     * cannot keep this call from returning. */
+    size_t left = daran_rx_queued(&drive->rx);
+    size_t lines = 0;
+    while (left != 0u) {
+        const uint8_t *bytes;
+        size_t run = daran_rx_run(&drive->rx, &bytes);
+        bool ended = false;
+        size_t taken = daran_framer_feed(drive, bytes, run < left ? run : left, true, &ended);
+        left -= taken;
+        /* Free the line's slots before it runs: the producer may refill them. */
+        daran_rx_skip(&drive->rx, taken);
+        if (ended) {
+            (void)run_framed_line(drive);
+            lines++;
+        }
+    }
+    return lines;
 }
 
 /* An `axisN.` path: N is the motor, the rest is looked up among the axis
@@ -173,7 +206,9 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     return daran_run_command(drive, &request);
 }
 
-daran_result_t daran_run_framed_line(daran_drive_t *drive)
+/* Run the line the framer finished (or reject it), and reset the framer.
+ * Returns what daran_process_line() returns. */
+static daran_result_t run_framed_line(daran_drive_t *drive)
 {
     uint8_t flags = drive->line_flags;
     daran_line_t line = {drive->line, drive->line_len, drive->star_at, drive->line_xor};

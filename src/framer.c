@@ -10,7 +10,9 @@
  * about 10% on recorded sessions, whose fields are short, for 470 bytes of
  * flash; an inner loop per field saved 110 instructions a line for 72
  * bytes. Flash decided both: docs/performance.md.) */
-#include "internal.h"
+#include "framer.h"
+#include "line.h"
+#include "rx_ring.h"
 
 void daran_framer_reset(daran_drive_t *drive)
 {

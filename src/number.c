@@ -3,6 +3,7 @@
  * each step is exact). Single-precision FPU only: no double, no libc number
  * functions, no heap; the one big scratch is ~120 bytes in the rare slow path. */
 #include "number.h"
+#include "text.h"
 
 #include <float.h>
 #include <stdint.h>

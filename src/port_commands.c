@@ -1,7 +1,11 @@
 /* The port's own commands: checking and keeping its table, finding a word
  * in it, and what a handler uses (the field parsers the core's handlers use,
  * and reply lines). */
-#include "internal.h"
+#include "command.h"
+#include "handlers.h"
+#include "number.h"
+#include "reply.h"
+#include "text.h"
 
 #include "daran_port.h"
 
@@ -25,7 +29,7 @@ static const daran_port_command_t *find_in(const daran_port_command_t *commands,
         const char *w = commands[i].word;
         size_t k = 0;
         /* command words are case-insensitive (spec 1); the table's are lower case */
-        while (k < word->len && w[k] != '\0' && (word->text[k] | 0x20) == w[k]) {
+        while (k < word->len && w[k] != '\0' && daran_letter_is(word->text[k], w[k])) {
             k++;
         }
         if (k == word->len && w[k] == '\0') {

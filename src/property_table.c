@@ -6,7 +6,10 @@
  * it can be, and one comparison of that property's words decides. The
  * cost depends on the path's length only, never on how many rows the table
  * has. */
-#include "internal.h"
+#include "number.h"
+#include "property.h"
+#include "reply.h"
+#include "text.h"
 
 #define DARAN_ATTR(type, access, scope, range, unit) \
     (uint16_t)((type) | (access) << 3 | (scope) << 4 | (range) << 5 | (unit) << 10)

@@ -1,6 +1,9 @@
 /* The reply writer: builds one line in the instance's reply buffer and hands
  * it whole to the port, with " *N" when the request carried a checksum. */
-#include "internal.h"
+#include "checksum.h"
+#include "number.h"
+#include "reply.h"
+#include "text.h"
 
 #if DARAN_REPLY_CRLF
 #define LINE_END "\r\n"
@@ -30,11 +33,7 @@ void daran_reply_text(daran_drive_t *drive, const char *text, size_t len)
 
 void daran_reply_cstr(daran_drive_t *drive, const char *text)
 {
-    size_t len = 0;
-    while (text[len] != '\0') {
-        len++;
-    }
-    daran_reply_text(drive, text, len);
+    daran_reply_text(drive, text, daran_text_len(text));
 }
 
 void daran_reply_space(daran_drive_t *drive)

@@ -3,7 +3,12 @@
  * one), with the values `axis0.telemetry.fields` selects, in bit order. The
  * port calls daran_telemetry_tick() once per control tick from the context
  * that runs daran_poll(), so a report never falls inside a reply. */
-#include "internal.h"
+#include "compiler.h"
+#include "hal.h"
+#include "handlers.h"
+#include "number.h"
+#include "reply.h"
+#include "telemetry.h"
 
 #include "daran_port.h"
 

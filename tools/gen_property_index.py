@@ -186,6 +186,53 @@ def c_string(data):
     return '"' + data.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
+def shared_segments(paths):
+    """Each path as segments and the separators between them. A segment is a
+    word, or a run of words that many paths share ("controller.config"),
+    stored once with its own separators: a path then names it with one byte
+    instead of one a word. Runs are merged greedily, the pair of neighbours
+    that saves the most bytes first, while a merge still saves any."""
+    split = {}
+    for path in paths:
+        words = re.split(r"([._])", path)
+        split[path] = [words[0::2], words[1::2]]
+
+    def text_bytes(word):  # 5 bits a character and 10 of end position
+        return (5 * len(word) + 10) / 8.0
+
+    while True:
+        pairs = {}
+        for words, seps in split.values():
+            k = 0
+            while k + 1 < len(words):
+                key = (words[k], seps[k], words[k + 1])
+                pairs[key] = pairs.get(key, 0) + 1
+                k += 1
+        uses = {}
+        for words, _ in split.values():
+            for w in words:
+                uses[w] = uses.get(w, 0) + 1
+        best = None
+        for (a, sep, b), count in sorted(pairs.items()):
+            merged = a + sep + b
+            gain = count - (0 if merged in uses else text_bytes(merged))
+            # a word whose every use becomes the merged one is stored no more
+            gain += text_bytes(a) if uses[a] == count else 0
+            gain += text_bytes(b) if uses[b] == count and b != a else 0
+            if gain > 0 and (best is None or gain > best[0]):
+                best = (gain, a, sep, b)
+        if best is None:
+            return {path: (words, seps) for path, (words, seps) in split.items()}
+        _, a, sep, b = best
+        for words, seps in split.values():
+            k = 0
+            while k + 1 < len(words):
+                if words[k] == a and seps[k] == sep and words[k + 1] == b:
+                    words[k:k + 2] = [a + sep + b]
+                    del seps[k]
+                k += 1
+
+
 def generate(rows, omit, ranges):
     ids = [r[0] for r in rows]
     unknown = sorted(set(omit) - set(ids))
@@ -219,11 +266,13 @@ def generate(rows, omit, ranges):
                                "vendor path; omit the vendor row first" % (rows[i][1], seen[key]))
         seen[key] = rows[i][0]
 
+    segments = shared_segments([rows[i][1] for i in kept])
+
     def words_of(path):
-        return re.split(r"[._]", path)
+        return segments[path][0]
 
     def separators_of(path):
-        return [c for c in path if c in "._"]
+        return segments[path][1]
 
     words = sorted({w for i in kept for w in words_of(rows[i][1])}, key=lambda w: w.encode())
     if len(words) > 255:
@@ -237,7 +286,7 @@ def generate(rows, omit, ranges):
 
     keys = []
     for i in kept:
-        parts = words_of(rows[i][1])
+        parts = re.split(r"[._]", rows[i][1])
         if len(parts) > MAX_WORDS or "" in parts:
             refuse("row " + rows[i][0], "path %s: 1..%d non-empty words" % (rows[i][1], MAX_WORDS))
         keys.append((1 if rows[i][2] == "AXIS" else 0, rows[i][1].encode()))
