@@ -44,6 +44,14 @@ static const motion_shape_t shapes[DARAN_SHAPE_COUNT] = {
                                 VALUE(SLOT_KD, CHECK_NON_NEGATIVE)}},
 };
 
+/* The modes of v and c (spec 5), carried as the float a value slot holds:
+ * a preset's mode is one of ms's floats. */
+#define MODE_DIRECT 1.0f        /* v: velocity, c: torque, each at once */
+#define MODE_VELOCITY_RAMP 2.0f /* v: the parameter is the ramp rate */
+/* What a well-formed integer past every mode becomes: no set holds it, so
+ * check_value answers `invalid mode` for it like for any other. */
+#define MODE_NONE -1.0f
+
 /* Modes as bit sets: bit m set = mode m allowed. Mode 2 of `c` is the vendor's
  * own C libraries' name for the torque ramp (6). */
 static const uint8_t mode_sets[] = {
@@ -73,7 +81,7 @@ static daran_result_t check_value(uint8_t check, float value)
 
 /* A mode field is an exact integer (D12): "1.5" is an invalid value, a
  * well-formed integer outside the set an invalid mode. */
-static daran_result_t parse_value(const daran_field_t *field, uint8_t check, float *out)
+static daran_result_t parse_motion_value(const daran_field_t *field, uint8_t check, float *out)
 {
     if (check == CHECK_MODE_VELOCITY || check == CHECK_MODE_TORQUE) {
         uint64_t mode;
@@ -81,7 +89,7 @@ static daran_result_t parse_value(const daran_field_t *field, uint8_t check, flo
         if (result == DARAN_ERR_INVALID_VALUE) {
             return result;
         }
-        *out = (result == DARAN_OK && mode < 8u) ? (float)(uint8_t)mode : -1.0f;
+        *out = (result == DARAN_OK && mode < 8u) ? (float)(uint8_t)mode : MODE_NONE;
     } else {
         daran_result_t result = daran_parse_f32(field->text, field->len, out);
         if (result != DARAN_OK) {
@@ -97,7 +105,7 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
     const motion_shape_t *shape = &shapes[shape_id];
     float slot[SLOT_COUNT];
     for (uint8_t i = 0; i < SLOT_COUNT; i++) {
-        slot[i] = i == SLOT_MODE ? 1.0f : 0.0f; /* the mode of v and c defaults to 1 */
+        slot[i] = i == SLOT_MODE ? MODE_DIRECT : 0.0f; /* the mode of v and c defaults to 1 */
     }
     move->kind = (daran_move_kind_t)shape->kind;
     move->given = 0;
@@ -119,12 +127,12 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
 
     /* v and c: the mode says what the parameter is. A ramp needs a rate
      * >= 0; 0 holds the setpoint where it is (spec 10.1). */
-    if (shape->kind == DARAN_MOVE_VELOCITY && slot[SLOT_MODE] == 2.0f) {
+    if (shape->kind == DARAN_MOVE_VELOCITY && slot[SLOT_MODE] == MODE_VELOCITY_RAMP) {
         move->kind = DARAN_MOVE_VELOCITY_RAMP;
         slot[SLOT_RATE] = slot[SLOT_PARAM];
     } else if (shape->kind == DARAN_MOVE_VELOCITY) {
         slot[SLOT_TORQUE] = slot[SLOT_PARAM];
-    } else if (shape->kind == DARAN_MOVE_TORQUE && slot[SLOT_MODE] != 1.0f) {
+    } else if (shape->kind == DARAN_MOVE_TORQUE && slot[SLOT_MODE] != MODE_DIRECT) {
         move->kind = DARAN_MOVE_TORQUE_RAMP;
         slot[SLOT_RATE] = slot[SLOT_PARAM];
     }
@@ -172,7 +180,7 @@ daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *req
     float values[DARAN_MOTION_VALUES_MAX];
     for (uint8_t i = 0; i < count; i++) {
         daran_field_t field = daran_field_at(request, 2u + i);
-        daran_result_t result = parse_value(&field, CHECK_OF(shape->value[i]), &values[i]);
+        daran_result_t result = parse_motion_value(&field, CHECK_OF(shape->value[i]), &values[i]);
         if (result != DARAN_OK) {
             return result;
         }

@@ -33,7 +33,7 @@ static daran_result_t parse_integer(daran_prop_type_t type, const daran_field_t 
 }
 
 /* Grammar and range of the written value, as the property's table row says. */
-static daran_result_t parse_value(daran_property_t row, const daran_field_t *field,
+static daran_result_t parse_property_value(daran_property_t row, const daran_field_t *field,
                                   daran_value_t *value)
 {
     daran_range_t range = DARAN_PROPERTY_RANGE(row);
@@ -90,7 +90,7 @@ daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)
     daran_value_t value;
     value.u64 = 0;
     daran_field_t field = daran_field_at(request, 2);
-    daran_result_t result = parse_value(row, &field, &value);
+    daran_result_t result = parse_property_value(row, &field, &value);
     if (result != DARAN_OK) {
         return result;
     }

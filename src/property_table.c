@@ -203,7 +203,7 @@ daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t
 {
     uint32_t h = DARAN_HASH_SEED + (uint32_t)scope;
     for (size_t i = 0; i < len; i++) {
-        h = (h ^ (uint8_t)name[i]) * 16777619u;
+        h = (h ^ (uint8_t)name[i]) * DARAN_HASH_PRIME;
     }
     uint32_t displacement = hash_displacement[h >> (32u - DARAN_HASH_BUCKET_BITS)];
     uint32_t x = (h + displacement * ((h >> 16) | 1u)) & 0xFFFFu;

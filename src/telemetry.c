@@ -12,12 +12,28 @@
 
 #include "daran_port.h"
 
-/* What each field bit reports, in bit order; the first seven are floats. */
-static const uint8_t field_props[] = {
-    DARAN_PROP_POS_ESTIMATE,    DARAN_PROP_VEL_ESTIMATE,      DARAN_PROP_TORQUE_ESTIMATE,
-    DARAN_PROP_IQ_MEASURED,     DARAN_PROP_VBUS_VOLTAGE,      DARAN_PROP_FET_TEMPERATURE,
-    DARAN_PROP_MOTOR_TEMPERATURE, DARAN_PROP_AXIS_ERROR,      DARAN_PROP_TRAJECTORY_DONE,
-};
+/* The widest text of each kind of value, with the space before it: a float,
+ * the error register (a u32, 10 digits), the trajectory flag (one digit). */
+#define F32_WIDTH (1u + DARAN_F32_TEXT_MAX)
+#define U32_WIDTH (1u + 10u)
+#define FLAG_WIDTH (1u + 1u)
+
+/* What each field bit reports, in bit order, and its widest text. */
+#define TELEMETRY_FIELDS(X)                                                               \
+    X(DARAN_PROP_POS_ESTIMATE, F32_WIDTH) X(DARAN_PROP_VEL_ESTIMATE, F32_WIDTH)           \
+    X(DARAN_PROP_TORQUE_ESTIMATE, F32_WIDTH) X(DARAN_PROP_IQ_MEASURED, F32_WIDTH)         \
+    X(DARAN_PROP_VBUS_VOLTAGE, F32_WIDTH) X(DARAN_PROP_FET_TEMPERATURE, F32_WIDTH)        \
+    X(DARAN_PROP_MOTOR_TEMPERATURE, F32_WIDTH) X(DARAN_PROP_AXIS_ERROR, U32_WIDTH)        \
+    X(DARAN_PROP_TRAJECTORY_DONE, FLAG_WIDTH)
+
+#define PROP_OF(prop, width) prop,
+static const uint8_t field_props[] = {TELEMETRY_FIELDS(PROP_OF)};
+#undef PROP_OF
+#define WIDTH_OF(prop, width) width,
+static const uint8_t field_width[] = {TELEMETRY_FIELDS(WIDTH_OF)};
+#undef WIDTH_OF
+#define PLUS_WIDTH(prop, width) +(width)
+#define ALL_FIELDS_WIDTH (0u TELEMETRY_FIELDS(PLUS_WIDTH))
 #define FIELD_COUNT (sizeof field_props / sizeof field_props[0])
 /* every field fits daran_append_properties, and the range of
  * axis0.telemetry.fields ("0..511") has one bit per field */
@@ -26,16 +42,15 @@ DARAN_STATIC_ASSERT(FIELD_COUNT == 9u, telemetry_range_has_a_bit_per_field);
 
 bool daran_telemetry_fits(uint32_t fields)
 {
-    /* the widest line: "@255 " and a 16-character time, each float 16
-     * characters and a space, the error register 10, the flag 1, then
-     * " *255" and the line end */
+    /* the widest line: "@255 " and a time, the fields, then " *255" and
+     * the line end */
     size_t width = 5u + DARAN_F32_TEXT_MAX + 5u + (DARAN_REPLY_CRLF ? 2u : 1u);
-    if (DARAN_REPLY_MAX >= width + 7u * (1u + DARAN_F32_TEXT_MAX) + 11u + 2u) {
+    if (DARAN_REPLY_MAX >= width + ALL_FIELDS_WIDTH) {
         return true; /* every field set fits: the default */
     }
     for (unsigned bit = 0; bit < FIELD_COUNT; bit++) {
         if (((fields >> bit) & 1u) != 0u) {
-            width += bit < 7u ? 1u + DARAN_F32_TEXT_MAX : (bit == 7u ? 11u : 2u);
+            width += field_width[bit];
         }
     }
     return width <= DARAN_REPLY_MAX;

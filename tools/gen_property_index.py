@@ -304,6 +304,7 @@ def generate(rows, omit, ranges):
     out.append("#define DARAN_INDEX_PROPERTIES %du /* rows with a path in this build */" % len(kept))
     out.append("#define DARAN_WORD_COUNT %du" % len(words))
     out.append("#define DARAN_HASH_SEED 0x%08xu" % seed)
+    out.append("#define DARAN_HASH_PRIME %du /* the one FNV-1a prime: fnv() here, daran_find_property() in C */" % FNV_PRIME)
     out.append("#define DARAN_HASH_BUCKET_BITS %du" % bucket_bits)
     out.append("#define DARAN_HASH_SLOTS %du" % slots)
     out.append("#define DARAN_HASH_EMPTY 0x%xu" % empty)

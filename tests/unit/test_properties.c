@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "mock_hal.h"
+#include "property.h"
 
 void setUp(void)
 {
@@ -750,6 +751,23 @@ static void test_names_that_hash_onto_a_row_are_compared_in_full(void)
             mock_check(refused_as_invalid_property(m, p->scope, v), m, __FILE__, __LINE__,
                        "\"%s\" must be an invalid property", v);
         }
+    }
+}
+
+/* The perfect hash is built by tools/gen_property_index.py (Python) and
+ * walked by daran_find_property() (C), both from DARAN_HASH_PRIME: they
+ * agree only if each row's path, hashed in C, lands on the row Python put
+ * in that slot. */
+static void test_c_and_python_hash_every_path_alike(void)
+{
+    for (size_t i = 0; i < N_ROWS; i++) {
+        daran_prop_t found = DARAN_PROP_COUNT;
+        daran_scope_t scope = rows[i].scope == SCOPE_AXIS ? DARAN_SCOPE_AXIS : DARAN_SCOPE_SYSTEM;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(DARAN_OK,
+                                      daran_find_property(scope, rows[i].path,
+                                                          strlen(rows[i].path), &found),
+                                      rows[i].path);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(rows[i].id, found, rows[i].path);
     }
 }
 
