@@ -148,9 +148,7 @@ const daran_command_t *daran_find_command(const daran_field_t *word)
         return NULL;
     }
     for (size_t i = 0; i < COMMAND_COUNT; i++) {
-        const char *row = commands[i].word;
-        if (daran_letter_is(word->text[0], row[0]) &&
-            (word->len == 2u ? daran_letter_is(word->text[1], row[1]) : row[1] == '\0')) {
+        if (daran_word_is(word->text, word->len, commands[i].word, sizeof commands[i].word)) {
             return &commands[i];
         }
     }

@@ -26,13 +26,8 @@ static const daran_port_command_t *find_in(const daran_port_command_t *commands,
                                            const daran_field_t *word)
 {
     for (size_t i = 0; i < count; i++) {
-        const char *w = commands[i].word;
-        size_t k = 0;
         /* command words are case-insensitive (spec 1); the table's are lower case */
-        while (k < word->len && w[k] != '\0' && daran_letter_is(word->text[k], w[k])) {
-            k++;
-        }
-        if (k == word->len && w[k] == '\0') {
+        if (daran_word_is(word->text, word->len, commands[i].word, SIZE_MAX)) {
             return &commands[i];
         }
     }
@@ -53,8 +48,8 @@ static bool compiled_out_vendor_word(const daran_field_t *word)
 #endif
     };
     for (size_t i = 0; i < sizeof words / sizeof words[0]; i++) {
-        if (words[i][0] == word->text[0] && words[i][1] == (word->len == 2u ? word->text[1] : '\0')) {
-            return word->len <= 2u;
+        if (daran_word_is(word->text, word->len, words[i], sizeof words[i])) {
+            return true;
         }
     }
     return false;

@@ -26,4 +26,19 @@ static inline bool daran_letter_is(char c, char lower)
     return (char)(c | 0x20) == lower;
 }
 
+/* Does the field text[0..len) spell @p word (lower-case letters, at most
+ * @p max of them, NUL-terminated when shorter) in either case? A field has
+ * neither NUL nor space, the two bytes daran_letter_is() would match with
+ * the NUL, so the word's end needs no test of its own inside the loop. */
+static inline bool daran_word_is(const char *text, size_t len, const char *word, size_t max)
+{
+    size_t k = 0;
+    for (; k < len; k++) {
+        if (k == max || !daran_letter_is(text[k], word[k])) {
+            return false;
+        }
+    }
+    return k == max || word[k] == '\0';
+}
+
 #endif /* DARAN_TEXT_H */

@@ -1011,6 +1011,7 @@ int main(void)
     ADD(test_non_negative_accepts_negative_zero);
     ADD(test_unknown_paths_are_invalid_properties);
     ADD(test_names_that_hash_onto_a_row_are_compared_in_full);
+    ADD(test_c_and_python_hash_every_path_alike);
     ADD(test_a_path_for_another_drive_is_silent_whatever_it_names);
     ADD(test_temperature_and_circular_limits_are_not_cross_checked);
     ADD(test_setpoint_write_reaches_the_hal_once);
