@@ -36,38 +36,39 @@ daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request
  * ramp 2v/a long) 2v^2/a, so t = d/v + ramps/v: v is the smaller root of
  * s v^2 - a t v + a d = 0 with s = 1 or 2, written as 2ad / (at + sqrt(...))
  * so no cancellation eats its digits. A zero duration or acceleration can
- * only be kept by a drive that need not move (spec 10.1). */
+ * only be kept by a drive that need not move (spec 10.1, D41). @p move comes
+ * with the target alone (nothing given, no cruise, no rate). */
 static daran_result_t timed_move(float d, float t, float a, bool s_curve, daran_move_t *move)
 {
     if (d == 0.0f) {
-        move->given = 0; /* nothing to plan: the drive keeps its settings */
-        move->vel_rpm = 0.0f;
-        move->rate = 0.0f;
-        return DARAN_OK;
+        return DARAN_OK; /* nothing to plan: the drive keeps its settings and any running move */
     }
     if (t == 0.0f || a == 0.0f) {
         return DARAN_ERR_TRAJECTORY_INFEASIBLE;
     }
+    move->given = DARAN_GIVEN_VEL | DARAN_GIVEN_RATE;
     float ramps = s_curve ? 8.0f : 4.0f;
     float at = a * t;
     float discriminant = at * at - ramps * a * d;
+    float v;
+    float rate;
     if (!daran_is_finite(discriminant)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
     if (discriminant >= 0.0f) {
-        float v = 2.0f * a * d / (at + sqrtf(discriminant));
-        move->vel_rpm = v / DEG_PER_S_PER_RPM;
-        move->rate = a / DEG_PER_S_PER_RPM;
-        return DARAN_OK;
-    }
-    if (-discriminant <= TIMED_MOVE_SLACK * at * at) {
+        v = 2.0f * a * d / (at + sqrtf(discriminant));
+        rate = a;
+    } else if (-discriminant <= TIMED_MOVE_SLACK * at * at) {
         /* The triangle that lands exactly on time: peak 2d/t, acceleration
          * 4d/t^2 (trapezoid) or 8d/t^2 (S-curve). */
-        move->vel_rpm = 2.0f * d / t / DEG_PER_S_PER_RPM;
-        move->rate = ramps * d / (t * t) / DEG_PER_S_PER_RPM;
-        return DARAN_OK;
+        v = 2.0f * d / t;
+        rate = ramps * d / (t * t);
+    } else {
+        return DARAN_ERR_TRAJECTORY_INFEASIBLE;
     }
-    return DARAN_ERR_TRAJECTORY_INFEASIBLE;
+    move->vel_rpm = v / DEG_PER_S_PER_RPM;
+    move->rate = rate / DEG_PER_S_PER_RPM;
+    return DARAN_OK;
 }
 
 /* S-curve planning when the drive says so; a port that left traj_mode out
@@ -83,22 +84,19 @@ static daran_result_t uses_s_curve(daran_drive_t *drive, bool *s_curve)
 /* The move a start makes of the preset. Positional starts aim at p1,
  * absolute or relative to the current position setpoint; `mq` reads p2 as a
  * duration and p3 as the acceleration, both >= 0, and picks its own cruise
- * velocity. */
+ * velocity for the distance from where the drive is heading (D41): the
+ * running move's end (`input_pos`) while `trajectory_done` reads 0, else the
+ * position setpoint (also on a port without those properties). Its move is
+ * built from p1 alone: p2 and p3 are not q's cruise and acceleration. */
 static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uint32_t rel,
                                   daran_move_t *move)
 {
     const float *values = drive->preset;
-    daran_result_t result = DARAN_OK;
-    if (shape == DARAN_SHAPE_TRAPEZOID) {
-        if (!(values[1] >= 0.0f) || !(values[2] >= 0.0f)) {
-            return DARAN_ERR_OUT_OF_RANGE;
-        }
-        /* q's own check would refuse the duration 0 a host may send */
-        const float shape_values[3] = {values[0], 1.0f, values[2]};
-        result = daran_shape_move(shape, shape_values, 3, move);
-    } else {
-        result = daran_shape_move(shape, values, 3, move);
+    bool timed = shape == DARAN_SHAPE_TRAPEZOID;
+    if (timed && (!(values[1] >= 0.0f) || !(values[2] >= 0.0f))) {
+        return DARAN_ERR_OUT_OF_RANGE;
     }
+    daran_result_t result = daran_shape_move(shape, values, timed ? 1u : 3u, move);
     if (result != DARAN_OK || shape == DARAN_SHAPE_VELOCITY || shape == DARAN_SHAPE_TORQUE) {
         return result;
     }
@@ -113,7 +111,7 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
     if (!daran_is_finite(move->pos_deg)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
-    if (shape != DARAN_SHAPE_TRAPEZOID) {
+    if (!timed) {
         return DARAN_OK;
     }
     bool s_curve;
@@ -121,7 +119,17 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
     if (result != DARAN_OK) {
         return result;
     }
-    move->given = DARAN_GIVEN_VEL | DARAN_GIVEN_RATE;
+    daran_value_t value;
+    result = daran_get(drive, DARAN_PROP_TRAJECTORY_DONE, &value);
+    if (result == DARAN_OK && value.u32 == 0u) {
+        result = daran_get(drive, DARAN_PROP_INPUT_POS, &value);
+        if (result == DARAN_OK) {
+            setpoint.f32 = value.f32; /* a move runs: measure from its end */
+        }
+    }
+    if (result != DARAN_OK && result != DARAN_ERR_INVALID_PROPERTY) {
+        return result;
+    }
     return timed_move(fabsf(move->pos_deg - setpoint.f32), values[1],
                       values[2] * DEG_PER_S_PER_RPM, s_curve, move);
 }

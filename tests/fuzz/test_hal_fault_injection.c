@@ -67,8 +67,10 @@ static const char *const session[] = {
     "w axis1.trap_traj.config.traj_mode 2",
     "ms 1 120 5 10",
     "mq 0 0",
-    "ms 1 0 0 0", /* the setpoint since `sz`: distance 0, duration 0 */
-    "mq 1 0",
+    /* the vendor library's repeated call: the running move's own target
+     * again (this HAL's trajectory_done reads 0), duration 0 (D41) */
+    "ms 1 120 0 0",
+    "mq 0 0",
     "sr 1",
 };
 #define SESSION_LEN (sizeof session / sizeof session[0])

@@ -481,6 +481,126 @@ static void test_mq_zero_duration_or_accel_at_zero_distance_is_a_trapezoid_in_pl
     TEST_ASSERT_EQUAL_STRING("10\n", ASSERT_QUERY(m, "r axis1.output_shaft.trap_traj_accel_limit"));
 }
 
+/* ---- D41: mq measures from where the drive is heading ----
+ *
+ * The vendor's Python and STM32 libraries call set_angles() twice with the
+ * same targets without waiting: the second call computes duration 0 from the
+ * targets it sent last and sends `ms id pos 0 acc` + `mq 0 0` while the first
+ * synchronised move still runs. The distance of spec 10.1 is the one from
+ * the running move's end (input_pos while trajectory_done reads 0), else from
+ * the position setpoint. */
+
+/* The mock as a drive on its way to @p end, its setpoint passing
+ * @p setpoint: trajectory_done 0. */
+static void mock_moving(mock_t *m, float setpoint, float end)
+{
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = setpoint;
+    m->props[DARAN_PROP_INPUT_POS].f32 = end;
+    m->props[DARAN_PROP_TRAJECTORY_DONE].u32 = 0;
+}
+
+static void test_mq_duration_or_accel_0_to_the_running_moves_end_is_accepted(void)
+{
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    /* absolute, by the vendor's broadcast start: duration 0, acceleration 0,
+     * both, and a duration that is not 0: the distance is 0 all the same */
+    static const char *const absolute[] = {"ms 1 30 0 10", "ms 1 30 0.0 10 ", "ms 1 30 2 0",
+                                           "ms 1 30 0 0", "ms 1 30 -0 -0", "ms 1 30 2 10"};
+    for (size_t i = 0; i < sizeof absolute / sizeof absolute[0]; i++) {
+        mock_moving(m, 12.0f, 30.0f);
+        ASSERT_SILENT(m, absolute[i]);
+        const daran_move_t *mv = ASSERT_MOVE(m, "mq 0 0");
+        /* nothing given: the drive keeps its settings and its running move */
+        ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 30, 0, 0, 0, 0, 0});
+    }
+    /* relative to the setpoint, landing on the running move's end */
+    mock_moving(m, 12.0f, 30.0f);
+    ASSERT_SILENT(m, "ms 1 18 0 10");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 1");
+    ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 30, 0, 0, 0, 0, 0});
+}
+
+static void test_mq_duration_or_accel_0_to_another_target_while_moving_is_infeasible(void)
+{
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    /* the setpoint the shaft is passing is not where the drive is heading */
+    static const char *const presets[] = {"ms 1 12 0 10", "ms 1 12 2 0", "ms 1 31 0 10",
+                                          "ms 1 29.5 2 0", "ms 1 0 0 0"};
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++) {
+        mock_moving(m, 12.0f, 30.0f);
+        ASSERT_SILENT(m, presets[i]);
+        ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
+        ASSERT_ERROR(m, "mq 0 0", "trajectory infeasible");
+    }
+    /* relative: 0 from the setpoint is 18 from the running move's end */
+    mock_moving(m, 12.0f, 30.0f);
+    ASSERT_SILENT(m, "ms 1 0 0 10");
+    ASSERT_ERROR(m, "mq 1 1", "trajectory infeasible");
+}
+
+static void test_mq_with_no_move_running_measures_from_the_setpoint(void)
+{
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    /* trajectory_done 1 (the mock's default): input_pos is only the last
+     * target, which the drive reached or left (a `v`, a written setpoint) */
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 20.0f;
+    m->props[DARAN_PROP_INPUT_POS].f32 = 99.0f;
+    ASSERT_SILENT(m, "ms 1 20 0 10");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 0 0");
+    ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 20, 0, 0, 0, 0, 0});
+    m->props[DARAN_PROP_INPUT_POS].f32 = 99.0f;
+    ASSERT_SILENT(m, "ms 1 99 0 10");
+    ASSERT_ERROR(m, "mq 0 0", "trajectory infeasible");
+    ASSERT_SILENT(m, "ms 1 99 2 0");
+    ASSERT_ERROR(m, "mq 0 0", "trajectory infeasible");
+}
+
+static void test_timed_mq_while_moving_times_the_distance_from_the_running_moves_end(void)
+{
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    /* what the host computed its duration for: 30 -> 90, not 12 -> 90 */
+    mock_moving(m, 12.0f, 30.0f);
+    ASSERT_SILENT(m, "ms 1 90 2 60");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 0 0");
+    check_timed_move(m, mv, 90.0f, 60.0f, 2.0f, 60.0f, __LINE__);
+    /* relative starts still add to the setpoint */
+    mock_moving(m, 12.0f, 30.0f);
+    ASSERT_SILENT(m, "ms 1 78 2 60");
+    mv = ASSERT_MOVE(m, "mq 1 1");
+    check_timed_move(m, mv, 90.0f, 60.0f, 2.0f, 60.0f, __LINE__);
+}
+
+/* A port without trajectory_done or input_pos (get answers
+ * DARAN_ERR_INVALID_PROPERTY) measures from the setpoint; any other failing
+ * read is answered, and the preset kept (D16, D26). */
+static void test_mq_heading_reads_missing_or_failing(void)
+{
+    SKIP_IF_NO_MULTI();
+    static const daran_prop_t props[] = {DARAN_PROP_TRAJECTORY_DONE, DARAN_PROP_INPUT_POS};
+    for (size_t i = 0; i < 2; i++) {
+        mock_t *m = mock_new();
+        mock_moving(m, 20.0f, 30.0f);
+        ASSERT_SILENT(m, "ms 1 20 0 10");
+        mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_INVALID_PROPERTY, (int)props[i]);
+        const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+        ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 20, 0, 0, 0, 0, 0});
+        mock_moving(m, 20.0f, 30.0f);
+        ASSERT_SILENT(m, "ms 1 30 0 10");
+        mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_INVALID_PROPERTY, (int)props[i]);
+        ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
+        mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, (int)props[i]);
+        ASSERT_ERROR(m, "mq 1 0", "motor fault");
+        mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_BAD_ARGUMENT, (int)props[i]);
+        ASSERT_ERROR(m, "mq 1 0", "motor fault");
+        mv = ASSERT_MOVE(m, "mq 1 0");
+        ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 30, 0, 0, 0, 0, 0});
+    }
+}
+
 /* ---- mq under traj_mode 1 (trapezoid) and 2 (S-curve), spec 10.3 ----
  *
  * D = 90 deg, T = 2 s, a = 60 (r/min)/s, so A = 6a = 360 deg/s^2, A T = 720,
@@ -952,6 +1072,11 @@ int main(void)
     ADD(test_mq_negative_duration_or_accel_is_out_of_range);
     ADD(test_mq_zero_duration_or_accel_with_a_distance_is_infeasible);
     ADD(test_mq_zero_duration_or_accel_at_zero_distance_is_a_trapezoid_in_place);
+    ADD(test_mq_duration_or_accel_0_to_the_running_moves_end_is_accepted);
+    ADD(test_mq_duration_or_accel_0_to_another_target_while_moving_is_infeasible);
+    ADD(test_mq_with_no_move_running_measures_from_the_setpoint);
+    ADD(test_timed_mq_while_moving_times_the_distance_from_the_running_moves_end);
+    ADD(test_mq_heading_reads_missing_or_failing);
     ADD(test_mq_trapezoid_cruise_is_the_hand_worked_value);
     ADD(test_mq_s_curve_cruise_is_the_hand_worked_value);
     ADD(test_mq_s_curve_within_the_1e4_shortfall_runs_the_exact_triangle);
