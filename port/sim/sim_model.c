@@ -783,6 +783,15 @@ daran_result_t daran_sim_model_move(daran_sim_model_t *m, const daran_move_t *mv
         mode = DARAN_SIM_MODE_FILTER;
         break;
     case DARAN_MOVE_TRAPEZOID:
+        if (mv->given == 0u && m->mode == DARAN_SIM_MODE_TRAPEZOID && !m->trajectory_done &&
+            limit_pos(m, mv->pos_deg) == m->trap_target) {
+            /* The running plan's own target with nothing new (a `q` without
+             * vel/acc, an `mq` whose distance from that target is 0, D41):
+             * the plan runs on and ends on its planned tick; a new plan
+             * would start from rest where the setpoint is now. */
+            m->input_pos = mv->pos_deg;
+            return DARAN_OK;
+        }
         if ((mv->given & DARAN_GIVEN_VEL) != 0u) {
             m->cfg[DARAN_PROP_TRAP_TRAJ_VEL_LIMIT].f32 = mv->vel_rpm;
         }

@@ -674,6 +674,61 @@ static void test_timed_moves_of_three_distances_end_on_the_planned_tick(void)
     }
 }
 
+/* D41: a TRAPEZOID with nothing given (what the core sends for `q id pos`
+ * and for an `mq` whose distance from the running move's end is 0, as the
+ * vendor library's repeated set_angles() makes) to the running plan's own
+ * target leaves the plan alone: the setpoint follows, tick by tick, the
+ * same path as a drive that was never told twice, and the move ends on its
+ * planned tick (2000, T = 2 s) exactly on the target. Trapezoid and S-curve.
+ * Another target, a given rate, or the same target after the plan ended
+ * plans anew. */
+static void test_same_target_with_nothing_given_keeps_the_running_plan(void)
+{
+    static daran_sim_model_t reference;
+    int mode;
+    for (mode = 1; mode <= 2; mode++) {
+        double a = mode == 1 ? 30.0 : 60.0;
+        daran_move_t timed = {DARAN_MOVE_TRAPEZOID, DARAN_GIVEN_VEL | DARAN_GIVEN_RATE,
+                              90.0f, 0.0f, 0.0f, (float)a, 0.0f, 0.0f};
+        long k;
+        timed.vel_rpm = (float)cruise_for(90.0, 2.0, a, mode);
+        daran_sim_model_init(&reference, 1000u);
+        daran_sim_model_init(&model, 1000u);
+        reference.cfg[DARAN_PROP_TRAJ_MODE].u32 = (uint32_t)mode;
+        model.cfg[DARAN_PROP_TRAJ_MODE].u32 = (uint32_t)mode;
+        TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_sim_model_move(&reference, &timed));
+        TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_sim_model_move(&model, &timed));
+        for (k = 1; k <= 2000; k++) {
+            if (k == 300 || k == 1999) { /* in the ramp, and on the last tick but one */
+                START(DARAN_MOVE_TRAPEZOID, 90.0f, 0.0f, 0.0f, 0.0f, 0u);
+                TEST_ASSERT_FALSE(model.trajectory_done);
+                TEST_ASSERT_TRUE(model.mode == DARAN_SIM_MODE_TRAPEZOID);
+            }
+            daran_sim_model_tick(&reference);
+            daran_sim_model_tick(&model);
+            TEST_ASSERT_TRUE(model.pos_sp == reference.pos_sp);
+            TEST_ASSERT_TRUE(model.vel_sp == reference.vel_sp);
+            TEST_ASSERT_EQUAL_INT64(k == 2000, model.trajectory_done);
+        }
+        TEST_ASSERT_TRUE(model.pos_sp == 90.0f);
+        /* done: the same target again is a plan of length 0, done at once */
+        START(DARAN_MOVE_TRAPEZOID, 90.0f, 0.0f, 0.0f, 0.0f, 0u);
+        TEST_ASSERT_TRUE(model.trajectory_done);
+        TEST_ASSERT_TRUE(model.pos_sp == 90.0f);
+        /* another target while a plan runs: a new plan from the setpoint */
+        START(DARAN_MOVE_TRAPEZOID, 0.0f, 0.0f, 0.0f, 0.0f, 0u);
+        run(&model, 0.5);
+        START(DARAN_MOVE_TRAPEZOID, 45.0f, 0.0f, 0.0f, 0.0f, 0u);
+        TEST_ASSERT_TRUE(model.trap_target == 45.0f);
+        TEST_ASSERT_TRUE(model.trap_start == model.pos_sp);
+        TEST_ASSERT_EQUAL_UINT32(0u, model.trap_ticks);
+        /* something given: a new plan even to the same target */
+        run(&model, 0.1);
+        START(DARAN_MOVE_TRAPEZOID, 45.0f, 0.0f, 0.0f, (float)a, DARAN_GIVEN_RATE);
+        TEST_ASSERT_EQUAL_UINT32(0u, model.trap_ticks);
+    }
+}
+
 /* S-curve too short to reach its cruise: the S-curve triangle. 10 deg at
  * 60 (r/min)/s (A = 360 deg/s^2) with a cruise of 100 r/min: peak
  * v = sqrt(a D / 12) = sqrt(50) = 7.071 r/min (42.43 deg/s), T = 4v/a =
@@ -1068,6 +1123,7 @@ int main(void)
     RUN_TEST(test_torque_ramp_at_rate_zero_holds_the_torque);
     RUN_TEST(test_filter_bandwidth_zero_holds_the_setpoint);
     RUN_TEST(test_timed_moves_of_three_distances_end_on_the_planned_tick);
+    RUN_TEST(test_same_target_with_nothing_given_keeps_the_running_plan);
     RUN_TEST(test_short_s_curve_is_the_s_curve_triangle);
     RUN_TEST(test_s_curve_is_continuous_in_position_velocity_and_acceleration);
     RUN_TEST(test_s_curve_with_unequal_rates_ends_on_time_and_stays_continuous);
