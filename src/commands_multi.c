@@ -2,7 +2,8 @@
  * start it as t/q/p/v/c on every drive of the bus at once. */
 #include <math.h>
 
-#include "internal.h"
+#include "hal.h"
+#include "handlers.h"
 
 #if DARAN_ENABLE_MULTI_MOTOR
 

@@ -3,7 +3,7 @@
  * port command (the count reads as 0, so the loop goes) and `h id
  * properties` calls no discovery; the size difference to command_table.o is
  * what those hooks cost. Never linked into anything. */
-#include "internal.h"
+#include "handlers.h" /* declared before the macro below replaces discovery */
 
 #define daran_cmd_discovery(drive, request) ((void)(request), DARAN_ERR_INVALID_VALUE)
 #define port_command_count port_command_count * 0u
