@@ -87,17 +87,22 @@ daran_result_t daran_args_mode(const daran_args_t *args, size_t index, uint32_t 
  * line end. Longer than DARAN_REPLY_MAX leaves is cut. */
 void daran_reply(daran_drive_t *drive, const char *payload, size_t len);
 
-/** Longest text of daran_format_float(). */
+/** Longest text of daran_format_float(): a buffer of this size always fits. */
 #define DARAN_FLOAT_TEXT_MAX 16
-/** Longest text of daran_format_uint(). */
+/** Longest text of daran_format_uint(): a buffer of this size always fits. */
 #define DARAN_UINT_TEXT_MAX 20
 /** A float32 in the reply number format (the shortest decimal that reads
- * back to the same float) into buf[0..DARAN_FLOAT_TEXT_MAX), no NUL;
- * returns the length. */
-size_t daran_format_float(float value, char *buf);
-/** An unsigned integer in decimal into buf[0..DARAN_UINT_TEXT_MAX), no NUL;
- * returns the length. */
-size_t daran_format_uint(uint64_t value, char *buf);
+ * back to the same float; "nan", "inf", "-inf", "-0") into buf[0..size), no
+ * NUL. Returns the length written; when the text is longer than @p size,
+ * writes nothing and returns 0 (a number is never cut). A @p size of
+ * DARAN_FLOAT_TEXT_MAX always fits; a smaller one works whenever the text
+ * fits. */
+size_t daran_format_float(float value, char *buf, size_t size);
+/** An unsigned integer in decimal into buf[0..size), no NUL. Returns the
+ * length written; when the text is longer than @p size, writes nothing and
+ * returns 0. A @p size of DARAN_UINT_TEXT_MAX always fits (3 is enough
+ * below 1000). */
+size_t daran_format_uint(uint64_t value, char *buf, size_t size);
 
 /** Telemetry (protocol.md 11.2). Call once per control tick, with the tick
  * count since boot and the tick rate, from the context that calls

@@ -512,15 +512,6 @@ static uint32_t shortest_digits(uint32_t exf, uint32_t frac, int32_t *k_out)
     return vb < t || (vb == t && !(s & 1u)) ? s : s + 1u;
 }
 
-static size_t put_text(char *buf, const char *text)
-{
-    size_t n = 0;
-    for (; text[n]; n++) {
-        buf[n] = text[n];
-    }
-    return n;
-}
-
 /* The decimal digits of hi * 2^32 + lo, written backwards ending at end; returns
  * where they start. Above 2^32 each digit is a long division by 10 of the 32-bit high
  * word and two 16-bit chunks: 32-bit hardware division only, never a 64-bit
@@ -542,33 +533,39 @@ static char *put_digits(char *p, uint32_t hi, uint32_t lo)
     return p;
 }
 
-size_t daran_format_f32(float value, char *buf)
+/* The text of daran_format_float() into buf[0..DARAN_F32_TEXT_MAX); returns
+ * its length. Zero and the words "inf" and "nan" take the same digit pass as
+ * every other value: their digits, no point, no exponent. Writes through a
+ * moving pointer (indexing a stack buffer costs more code on Cortex-M). */
+static size_t float_text(float value, char *buf)
 {
     uint32_t bits, s;
-    char d[10];
+    char d[10], *p = buf;
     const char *dig;
     int32_t k, nd, pt, j, last, sci;
-    size_t n = 0;
     memcpy(&bits, &value, sizeof bits);
     if (bits >> 31 && bits << 1 <= DARAN_F32_INF << 1) {
-        buf[n++] = '-'; /* not for a NaN */
+        *p++ = '-'; /* not for a NaN */
     }
     bits &= 0x7FFFFFFFu;
     if (bits >= DARAN_F32_INF) {
-        return n + put_text(buf + n, bits > DARAN_F32_INF ? "nan" : "inf");
+        dig = &"infnan"[bits > DARAN_F32_INF ? 3 : 0]; /* one literal for both words */
+        nd = 3;
+        k = 2; /* "d.dd x 10^2": positional, three digits, no point */
+    } else {
+        s = 0; /* zero prints as the one digit "0" */
+        k = 0;
+        if (bits) {
+            s = shortest_digits(bits >> 23, bits & 0x7FFFFFu, &k);
+            while (s % 10u == 0) {
+                s /= 10u;
+                k++;
+            }
+        }
+        dig = put_digits(d + sizeof d, 0, s);
+        nd = (int32_t)(d + sizeof d - dig);
+        k += nd - 1; /* value = d.ddd * 10^k */
     }
-    if (bits == 0) {
-        buf[n++] = '0';
-        return n;
-    }
-    s = shortest_digits(bits >> 23, bits & 0x7FFFFFu, &k);
-    while (s % 10u == 0) {
-        s /= 10u;
-        k++;
-    }
-    dig = put_digits(d + sizeof d, 0, s);
-    nd = (int32_t)(d + sizeof d - dig);
-    k += nd - 1; /* value = d.ddd * 10^k */
     sci = k < -5 || k > 8;
     /* One pass over the digit positions j: the point goes before position pt,
      * positions outside 0..nd-1 are zeros ("0.000d", "d000", "d.0e+XX"). */
@@ -576,27 +573,46 @@ size_t daran_format_f32(float value, char *buf)
     last = nd > pt + sci ? nd : pt + sci;
     for (j = pt > 0 ? 0 : pt - 1; j < last; j++) {
         if (j == pt) {
-            buf[n++] = '.';
+            *p++ = '.';
         }
-        buf[n++] = j >= 0 && j < nd ? dig[j] : '0';
+        *p++ = j >= 0 && j < nd ? dig[j] : '0';
     }
     if (sci) {
-        buf[n++] = 'e';
-        buf[n++] = k < 0 ? '-' : '+';
+        *p++ = 'e';
+        *p++ = k < 0 ? '-' : '+';
         k = k < 0 ? -k : k; /* float32: at most 45, two digits */
-        buf[n++] = (char)('0' + k / 10);
-        buf[n++] = (char)('0' + k % 10);
+        *p++ = (char)('0' + k / 10);
+        *p++ = (char)('0' + k % 10);
     }
+    return (size_t)(p - buf);
+}
+
+/* The printers' one size check: copy text[0..n) (n >= 1) to buf and return n
+ * when it fits in size, else write nothing and return 0. */
+static DARAN_NOINLINE size_t put_fit(size_t n, const char *text, char *buf, size_t size)
+{
+    size_t i;
+    if (n > size) {
+        return 0;
+    }
+    i = 0;
+    do { /* never empty */
+        buf[i] = text[i];
+    } while (++i < n);
     return n;
 }
 
-size_t daran_format_u64(uint64_t value, char *buf)
+/* Both printers build their text on the stack, then put_fit: the length is
+ * known before the first byte reaches buf, and the check is written once. */
+size_t daran_format_float(float value, char *buf, size_t size)
+{
+    char t[DARAN_F32_TEXT_MAX];
+    return put_fit(float_text(value, t), t, buf, size);
+}
+
+size_t daran_format_uint(uint64_t value, char *buf, size_t size)
 {
     char d[DARAN_U64_TEXT_MAX];
     const char *p = put_digits(d + sizeof d, (uint32_t)(value >> 32), (uint32_t)value);
-    size_t n = (size_t)(d + sizeof d - p), i;
-    for (i = 0; i < n; i++) {
-        buf[i] = p[i];
-    }
-    return n;
+    return put_fit((size_t)(d + sizeof d - p), p, buf, size);
 }

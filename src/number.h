@@ -8,9 +8,11 @@
 
 #include "daran_result.h"
 
-/* Longest text daran_format_f32() writes ("-0.0000123456789" is 16). */
+/* Longest text daran_format_float() writes ("-0.0000123456789" is 16);
+ * DARAN_FLOAT_TEXT_MAX in daran_port.h. */
 #define DARAN_F32_TEXT_MAX 16
-/* Longest text daran_format_u64() writes (18446744073709551615). */
+/* Longest text daran_format_uint() writes (18446744073709551615);
+ * DARAN_UINT_TEXT_MAX in daran_port.h. */
 #define DARAN_U64_TEXT_MAX 20
 
 /* Parse text[0..len) as a float32, correctly rounded (round to nearest, ties
@@ -28,20 +30,20 @@ daran_result_t daran_parse_f32(const char *text, size_t len, float *out);
  * UINT64_MAX. *out is untouched on error. */
 daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out);
 
-/* The public names of the two printers (daran_port.h): one function each. */
-#define daran_format_f32 daran_format_float
-#define daran_format_u64 daran_format_uint
+/* The two printers, public in daran_port.h (same declarations). Each writes
+ * its text into buf[0..size) only when the whole text fits (no NUL) and
+ * returns its length; when it does not fit it writes nothing and returns 0
+ * (never a cut number). A size of DARAN_F32_TEXT_MAX / DARAN_U64_TEXT_MAX
+ * always fits; a smaller one fits whenever the text does. */
 
-/* Write the shortest decimal that parses back to the same float32 into
- * buf[0..DARAN_F32_TEXT_MAX): positional when its decimal exponent k (value =
- * d.ddd x 10^k) is within -5..8, else scientific "d.ddde+XX" with at least
- * one digit after the point and a signed exponent of two or more digits;
- * "0"/"-0", "nan", "inf", "-inf". No NUL. Returns the length. */
-size_t daran_format_f32(float value, char *buf);
+/* The shortest decimal that parses back to the same float32: positional when
+ * its decimal exponent k (value = d.ddd x 10^k) is within -5..8, else
+ * scientific "d.ddde+XX" with at least one digit after the point and a signed
+ * exponent of two or more digits; "0"/"-0", "nan", "inf", "-inf". */
+size_t daran_format_float(float value, char *buf, size_t size);
 
-/* Write value in decimal into buf[0..DARAN_U64_TEXT_MAX). No NUL. Returns the
- * length. */
-size_t daran_format_u64(uint64_t value, char *buf);
+/* value in decimal, no leading zeros ("0" for 0). */
+size_t daran_format_uint(uint64_t value, char *buf, size_t size);
 
 /* The leading 64 bits of 10^q, truncated, for q = -64..45: the scale the
  * parser and the printer multiply by. Internal; exposed for its test. */

@@ -44,13 +44,13 @@ void daran_reply_space(daran_drive_t *drive)
 void daran_reply_f32(daran_drive_t *drive, float value)
 {
     char text[DARAN_F32_TEXT_MAX];
-    daran_reply_text(drive, text, daran_format_f32(value, text));
+    daran_reply_text(drive, text, daran_format_float(value, text, sizeof text));
 }
 
 void daran_reply_u64(daran_drive_t *drive, uint64_t value)
 {
     char text[DARAN_U64_TEXT_MAX];
-    daran_reply_text(drive, text, daran_format_u64(value, text));
+    daran_reply_text(drive, text, daran_format_uint(value, text, sizeof text));
 }
 
 void daran_reply_end(daran_drive_t *drive)
@@ -61,7 +61,8 @@ void daran_reply_end(daran_drive_t *drive)
         uint8_t sum = (uint8_t)(daran_xor(out, len) ^ (uint8_t)' ');
         out[len++] = ' ';
         out[len++] = '*';
-        len += daran_format_u64(sum, out + len); /* writes only its digits: 3 at most, inside TAIL_ROOM */
+        /* 3 digits at most, inside TAIL_ROOM: the room before the line end fits them */
+        len += daran_format_uint(sum, out + len, DARAN_REPLY_MAX - (sizeof LINE_END - 1u) - len);
     }
     for (size_t i = 0; i < sizeof LINE_END - 1u; i++) {
         out[len++] = LINE_END[i];

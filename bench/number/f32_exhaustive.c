@@ -27,13 +27,13 @@ static void report(uint32_t bits, const char *what, const char *text)
 /* "<m>e<e>" without snprintf (too slow for 2^32 rounds). */
 static size_t sci_text(char *buf, uint64_t m, int32_t e)
 {
-    size_t n = daran_format_u64(m, buf);
+    size_t n = daran_format_uint(m, buf, DARAN_U64_TEXT_MAX);
     buf[n++] = 'e';
     if (e < 0) {
         buf[n++] = '-';
         e = -e;
     }
-    n += daran_format_u64((uint64_t)e, buf + n);
+    n += daran_format_uint((uint64_t)e, buf + n, DARAN_U64_TEXT_MAX);
     buf[n] = '\0';
     return n;
 }
@@ -200,7 +200,7 @@ int main(int argc, char **argv)
         char buf[DARAN_F32_TEXT_MAX + 1];
         size_t n;
         memcpy(&f, &bits, 4);
-        n = daran_format_f32(f, buf);
+        n = daran_format_float(f, buf, DARAN_F32_TEXT_MAX);
         buf[n] = '\0';
         count++;
         if ((bits & 0x7FFFFFFFu) > 0x7F800000u) {

@@ -25,7 +25,7 @@ for v in 0 1 2 3; do
     set -- $(arm-none-eabi-size "$out/v$v.elf" | tail -1)
     total=$(( $1 + $2 ))
     [ "$v" = 0 ] && base=$total
-    case $v in 0) name="empty program";; 1) name="newlib-nano strtof";; 2) name="newlib-nano snprintf %f (-u _printf_float)";; 3) name="daran_parse_f32 + daran_format_f32";; esac
+    case $v in 0) name="empty program";; 1) name="newlib-nano strtof";; 2) name="newlib-nano snprintf %f (-u _printf_float)";; 3) name="daran_parse_f32 + daran_format_float";; esac
     printf '%-45s text+data %6d  delta %6d\n' "$name" "$total" $(( total - base ))
 done
 rm -rf "$out"

@@ -1,6 +1,6 @@
 /* Instruction-count benchmark of the number module against glibc, meant to run
  * under callgrind (bench/number/run_callgrind.sh): parse with daran_parse_f32
- * vs strtof, print with daran_format_f32 vs snprintf("%.9g"), over numbers a
+ * vs strtof, print with daran_format_float vs snprintf("%.9g"), over numbers a
  * real session sends: the tokens of the recorded client lines (file given on
  * the command line) plus generated telemetry (positions -360..360 with 2-4
  * decimals, velocities, small torques, %f-style values). Only the bench_*
@@ -122,7 +122,7 @@ __attribute__((noinline)) static void bench_print_ours(void)
     char buf[DARAN_F32_TEXT_MAX];
     size_t i;
     for (i = 0; i < g_count; i++) {
-        g_sink ^= (uint32_t)daran_format_f32(g_value[i], buf);
+        g_sink ^= (uint32_t)daran_format_float(g_value[i], buf, sizeof buf);
     }
 }
 

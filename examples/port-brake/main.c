@@ -39,7 +39,7 @@ static const struct {
 static void log_float(float value)
 {
     char text[DARAN_FLOAT_TEXT_MAX];
-    size_t len = daran_format_float(value, text);
+    size_t len = daran_format_float(value, text, sizeof text);
     fwrite(text, 1, len, stdout);
 }
 

@@ -249,17 +249,19 @@ static size_t put_text(char *out, size_t at, const char *text)
 }
 
 /* The value as a host would write it: shortest round-trip float, decimal
- * integers (a sign for s32). */
-static size_t value_text(daran_prop_type_t type, daran_value_t v, char *out)
+ * integers (a sign for s32), into out[0..size); the caller's line keeps room
+ * for the longest (sign and DARAN_UINT_TEXT_MAX digits). */
+static size_t value_text(daran_prop_type_t type, daran_value_t v, char *out, size_t size)
 {
     if (type == DARAN_TYPE_F32) {
-        return daran_format_float(v.f32, out);
+        return daran_format_float(v.f32, out, size);
     }
     if (type == DARAN_TYPE_S32 && v.s32 < 0) {
         out[0] = '-';
-        return 1u + daran_format_uint((uint64_t)(-(int64_t)v.s32), out + 1);
+        return 1u + daran_format_uint((uint64_t)(-(int64_t)v.s32), out + 1, size - 1u);
     }
-    return daran_format_uint(type == DARAN_TYPE_S32 ? (uint64_t)v.s32 : (uint64_t)v.u32, out);
+    return daran_format_uint(type == DARAN_TYPE_S32 ? (uint64_t)v.s32 : (uint64_t)v.u32, out,
+                             size);
 }
 
 bool daran_sim_nvm_config_in_range(const daran_value_t cfg[DARAN_PROP_COUNT],
@@ -286,7 +288,7 @@ bool daran_sim_nvm_config_in_range(const daran_value_t cfg[DARAN_PROP_COUNT],
         n = put_text(line, 0u, probe_rows[p].axis ? "w axis1." : "w ");
         n = put_text(line, n, probe_rows[p].path);
         line[n++] = ' ';
-        n += value_text(probe_rows[p].type, cfg[p], line + n);
+        n += value_text(probe_rows[p].type, cfg[p], line + n, sizeof line - n);
         if (!probe_rows[p].axis) {
             n = put_text(line, n, " 1");
         }

@@ -5,11 +5,13 @@
  *     nearest even), with this harness's own grammar check deciding what must
  *     be accepted; out of range exactly when strtof overflows to infinity;
  *  1: text -> daran_parse_u64 vs an exact decimal reference written here;
- *  2: 4 bytes -> float bits -> daran_format_f32: the text follows the
+ *  2: 4 bytes -> float bits -> daran_format_float: the text follows the
  *     protocol's notation rule, parses back to the same bits through both
  *     daran_parse_f32 and strtof, and is shortest (no decimal with one digit
  *     fewer reads back to the same float);
- *  3: 8 bytes -> daran_format_u64 vs printf, and back through parse_u64.
+ *  3: 8 bytes -> daran_format_uint vs printf, and back through parse_u64.
+ * Both printers, given one byte less than their text, write nothing and
+ * return 0; given exactly its length, write the same text.
  * Errors must leave *out untouched. */
 #include <inttypes.h>
 #include <math.h>
@@ -271,15 +273,34 @@ static bool shorter_exists(float v, size_t q)
     return false;
 }
 
-static void test_format_f32(uint32_t b)
+/* Still all 'Z': a printer given too little room wrote nothing. */
+static bool untouched(const char *u, size_t len)
+{
+    for (size_t i = 0; i < len; i++) {
+        if (u[i] != 'Z') {
+            return false;
+        }
+    }
+    return true;
+}
+
+static void test_format_float(uint32_t b)
 {
     float v = daran_float_of(b);
     char t[DARAN_F32_TEXT_MAX + 8];
     memset(t, 'Z', sizeof t);
-    size_t n = daran_format_f32(v, t);
-    FUZZ_CHECK(n >= 1u && n <= DARAN_F32_TEXT_MAX, "format_f32(%08" PRIx32 ") wrote %zu bytes", b,
-               n);
-    FUZZ_CHECK(t[DARAN_F32_TEXT_MAX] == 'Z', "format_f32 wrote past DARAN_F32_TEXT_MAX");
+    size_t n = daran_format_float(v, t, DARAN_F32_TEXT_MAX);
+    FUZZ_CHECK(n >= 1u && n <= DARAN_F32_TEXT_MAX, "format_float(%08" PRIx32 ") wrote %zu bytes",
+               b, n);
+    FUZZ_CHECK(t[DARAN_F32_TEXT_MAX] == 'Z', "format_float wrote past DARAN_F32_TEXT_MAX");
+    {
+        char u[DARAN_F32_TEXT_MAX + 1];
+        memset(u, 'Z', sizeof u);
+        FUZZ_CHECK(daran_format_float(v, u, n - 1u) == 0 && untouched(u, sizeof u),
+                   "format_float(%08" PRIx32 ") into %zu bytes wrote", b, n - 1u);
+        FUZZ_CHECK(daran_format_float(v, u, n) == n && memcmp(u, t, n) == 0 && u[n] == 'Z',
+                   "format_float(%08" PRIx32 ") into exactly %zu bytes", b, n);
+    }
     if (isnan(v)) {
         FUZZ_CHECK(n == 3u && memcmp(t, "nan", 3) == 0, "nan printed \"%s\"", fuzz_escape(t, n));
         return;
@@ -301,7 +322,7 @@ static void test_format_f32(uint32_t b)
 
     float back = 0.0f;
     FUZZ_CHECK(daran_parse_f32(t, n, &back) == DARAN_OK && daran_bits_of(back) == b,
-               "format_f32(%08" PRIx32 ") = \"%s\" does not parse back", b, fuzz_escape(t, n));
+               "format_float(%08" PRIx32 ") = \"%s\" does not parse back", b, fuzz_escape(t, n));
     char z[DARAN_F32_TEXT_MAX + 1];
     memcpy(z, t, n);
     z[n] = '\0';
@@ -313,18 +334,26 @@ static void test_format_f32(uint32_t b)
                "\"%s\" is not shortest: %zu digits would do", z, digits - 1u);
 }
 
-static void test_format_u64(uint64_t v)
+static void test_format_uint(uint64_t v)
 {
     char t[DARAN_U64_TEXT_MAX + 4];
     memset(t, 'Z', sizeof t);
-    size_t n = daran_format_u64(v, t);
+    size_t n = daran_format_uint(v, t, DARAN_U64_TEXT_MAX);
     char want[32];
     int wn = snprintf(want, sizeof want, "%" PRIu64, v);
     FUZZ_CHECK(n == (size_t)wn && memcmp(t, want, n) == 0 && t[DARAN_U64_TEXT_MAX] == 'Z',
-               "format_u64(%s) = \"%s\"", want, fuzz_escape(t, n));
+               "format_uint(%s) = \"%s\"", want, fuzz_escape(t, n));
+    {
+        char u[DARAN_U64_TEXT_MAX + 1];
+        memset(u, 'Z', sizeof u);
+        FUZZ_CHECK(daran_format_uint(v, u, n - 1u) == 0 && untouched(u, sizeof u),
+                   "format_uint(%s) into %zu bytes wrote", want, n - 1u);
+        FUZZ_CHECK(daran_format_uint(v, u, n) == n && memcmp(u, want, n) == 0 && u[n] == 'Z',
+                   "format_uint(%s) into exactly %zu bytes", want, n);
+    }
     uint64_t back = 0;
     FUZZ_CHECK(daran_parse_u64(t, n, &back) == DARAN_OK && back == v,
-               "parse_u64(format_u64(%s)) failed", want);
+               "parse_u64(format_uint(%s)) failed", want);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -349,14 +378,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (size_t i = 0; i + 4u <= n; i += 4u) {
             uint32_t b;
             memcpy(&b, s + i, 4);
-            test_format_f32(b);
+            test_format_float(b);
         }
         break;
     default:
         for (size_t i = 0; i + 8u <= n; i += 8u) {
             uint64_t v;
             memcpy(&v, s + i, 8);
-            test_format_u64(v);
+            test_format_uint(v);
         }
         break;
     }

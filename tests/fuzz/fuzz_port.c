@@ -231,7 +231,8 @@ static void port_end(daran_drive_t *drive, fuzz_hal_t *hal)
                "an omitted row read: \"%s\"", fuzz_escape(hal->out, hal->out_len));
     fuzz_hal_clear(hal);
     char want[DARAN_FLOAT_TEXT_MAX + 1];
-    size_t n = daran_format_float(hal->props[DARAN_PROP_BRAKE_TEMPERATURE].f32, want);
+    size_t n = daran_format_float(hal->props[DARAN_PROP_BRAKE_TEMPERATURE].f32, want,
+                                  sizeof want);
     FUZZ_CHECK(daran_process_line(drive, temperature_line, sizeof temperature_line - 1u) ==
                        DARAN_OK &&
                    hal->n_replies == 1u && hal->out_len > n && memcmp(hal->out, want, n) == 0,

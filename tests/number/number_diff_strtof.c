@@ -194,7 +194,7 @@ static void check_print(uint32_t bits)
 {
     char ours[DARAN_F32_TEXT_MAX + 1], ref[48], mant[48];
     float v = b2f(bits), back = 0.0f;
-    size_t n = daran_format_f32(v, ours);
+    size_t n = daran_format_float(v, ours, sizeof ours);
     int nd = 0, best = 0, digits;
     const char *p;
     ours[n] = '\0';

@@ -90,7 +90,7 @@ static void expect_text_at(UNITY_LINE_TYPE line, float value, const char *want)
     char buf[DARAN_F32_TEXT_MAX + 8];
     size_t n;
     memset(buf, 'x', sizeof buf);
-    n = daran_format_f32(value, buf);
+    n = daran_format_float(value, buf, DARAN_F32_TEXT_MAX);
     UNITY_TEST_ASSERT_SMALLER_OR_EQUAL_UINT(DARAN_F32_TEXT_MAX, n, line, want);
     UNITY_TEST_ASSERT_EQUAL_INT('x', buf[DARAN_F32_TEXT_MAX], line, "written past the limit");
     buf[n] = '\0';
@@ -101,7 +101,7 @@ static void expect_text_at(UNITY_LINE_TYPE line, float value, const char *want)
 static void expect_u64_text_at(UNITY_LINE_TYPE line, uint64_t value, const char *want)
 {
     char buf[DARAN_U64_TEXT_MAX + 1];
-    size_t n = daran_format_u64(value, buf);
+    size_t n = daran_format_uint(value, buf, DARAN_U64_TEXT_MAX);
     UNITY_TEST_ASSERT_SMALLER_OR_EQUAL_UINT(DARAN_U64_TEXT_MAX, n, line, want);
     buf[n] = '\0';
     UNITY_TEST_ASSERT_EQUAL_STRING(want, buf, line, NULL);
@@ -481,7 +481,7 @@ static void test_longest_text_fits_the_buffer(void)
     uint32_t b;
     size_t longest = 0;
     for (b = 0; b < 0xFF800000u; b += 0x00012345u) {
-        size_t n = daran_format_f32(daran_float_of(b), buf);
+        size_t n = daran_format_float(daran_float_of(b), buf, sizeof buf);
         longest = n > longest ? n : longest;
     }
     TEST_ASSERT_LESS_OR_EQUAL_UINT(DARAN_F32_TEXT_MAX, longest);
@@ -501,7 +501,7 @@ static void test_printed_text_parses_back_to_the_same_bits(void)
         if ((b & 0x7F800000u) == 0x7F800000u) {
             continue;
         }
-        n = daran_format_f32(daran_float_of(b), buf);
+        n = daran_format_float(daran_float_of(b), buf, sizeof buf);
         TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_parse_f32(buf, n, &f));
         TEST_ASSERT_EQUAL_HEX32(b, daran_bits_of(f));
     }
@@ -533,7 +533,7 @@ static void test_u64_printing_agrees_with_snprintf(void)
         x ^= x >> 7;
         x ^= x << 17;
         v = x >> (i % 64); /* every magnitude */
-        n = daran_format_u64(v, ours);
+        n = daran_format_uint(v, ours, DARAN_U64_TEXT_MAX);
         ours[n] = '\0';
         snprintf(ref, sizeof ref, "%llu", (unsigned long long)v);
         TEST_ASSERT_EQUAL_STRING(ref, ours);
@@ -546,9 +546,135 @@ static void test_u64_text_parses_back(void)
     uint64_t v = 1, back = 0;
     int i;
     for (i = 0; i < 64; i++, v = v * 3u + 1u) {
-        size_t n = daran_format_u64(v, buf);
+        size_t n = daran_format_uint(v, buf, sizeof buf);
         TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_parse_u64(buf, n, &back));
         TEST_ASSERT_EQUAL_UINT64(v, back);
+    }
+}
+
+/* ---- the size rule: the whole text when it fits in size, else nothing and 0 ---- */
+
+/* The printer under test: both have the same shape but for the value's type. */
+typedef size_t (*printer_t)(const void *value, char *buf, size_t size);
+
+static size_t print_float(const void *value, char *buf, size_t size)
+{
+    return daran_format_float(*(const float *)value, buf, size);
+}
+
+static size_t print_uint(const void *value, char *buf, size_t size)
+{
+    return daran_format_uint(*(const uint64_t *)value, buf, size);
+}
+
+/* Is buf[0..len) still all 'x'? */
+static int untouched(const char *buf, size_t len)
+{
+    size_t i;
+    for (i = 0; i < len; i++) {
+        if (buf[i] != 'x') {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Every size from 0 to 8 past the text: below its length, 0 and the buffer
+ * untouched; from its length on, the text and not a byte past it. */
+#define EXPECT_SIZE_RULE(print, value, want) expect_size_rule_at(__LINE__, (print), (value), (want))
+static void expect_size_rule_at(UNITY_LINE_TYPE line, printer_t print, const void *value,
+                                const char *want)
+{
+    char buf[DARAN_U64_TEXT_MAX + 8];
+    size_t len = strlen(want), size;
+    for (size = 0; size <= len + 8u; size++) {
+        size_t n;
+        memset(buf, 'x', sizeof buf);
+        n = print(value, buf, size);
+        if (size < len) {
+            UNITY_TEST_ASSERT_EQUAL_UINT(0, n, line, want);
+            UNITY_TEST_ASSERT(untouched(buf, sizeof buf), line, "written into too small a buffer");
+        } else {
+            UNITY_TEST_ASSERT_EQUAL_UINT(len, n, line, want);
+            UNITY_TEST_ASSERT_EQUAL_MEMORY(want, buf, len, line, want);
+            UNITY_TEST_ASSERT(untouched(buf + len, sizeof buf - len), line, "written past the text");
+        }
+    }
+}
+
+static void test_float_text_exactly_fits_its_length_and_not_one_byte_less(void)
+{
+    static const struct {
+        uint32_t bits;
+        const char *text;
+    } cases[] = {
+        {0x00000000u, "0"},          {0x80000000u, "-0"},      {0x7FC00000u, "nan"},
+        {0x7F800000u, "inf"},        {0xFF800000u, "-inf"},    {0x3FC00000u, "1.5"},
+        {0x41200000u, "10"},         {0xBF800000u, "-1"},      {0x4CBEBC20u, "100000000"},
+        {0x501502F9u, "1.0e+10"},    {0x3727C5ACu, "0.00001"}, {0x358637BDu, "1.0e-06"}, {0x7F7FFFFFu, "3.4028235e+38"},
+        {0x00000001u, "1.0e-45"},    {0xB74F0000u, "-0.0000123381615"}, /* 16: the longest */
+    };
+    size_t i;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        float value = daran_float_of(cases[i].bits);
+        EXPECT_TEXT(value, cases[i].text); /* the table is right */
+        EXPECT_SIZE_RULE(print_float, &value, cases[i].text);
+    }
+}
+
+static void test_uint_text_exactly_fits_its_length_and_not_one_byte_less(void)
+{
+    static const struct {
+        uint64_t value;
+        const char *text;
+    } cases[] = {
+        {0u, "0"},
+        {7u, "7"},
+        {255u, "255"}, /* the checksum: 3 bytes are enough */
+        {4294967296u, "4294967296"},
+        {UINT64_MAX, "18446744073709551615"}, /* 20: the longest */
+    };
+    size_t i;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        EXPECT_SIZE_RULE(print_uint, &cases[i].value, cases[i].text);
+    }
+}
+
+static void test_size_0_writes_nothing(void)
+{
+    char buf[4];
+    float f = 1.0f;
+    memset(buf, 'x', sizeof buf);
+    TEST_ASSERT_EQUAL_UINT(0, daran_format_float(f, buf, 0));
+    TEST_ASSERT_EQUAL_UINT(0, daran_format_float(-0.0f, buf, 0));
+    TEST_ASSERT_EQUAL_UINT(0, daran_format_float(daran_float_of(0x7FC00000u), buf, 0));
+    TEST_ASSERT_EQUAL_UINT(0, daran_format_uint(0u, buf, 0));
+    TEST_ASSERT_EQUAL_UINT(0, daran_format_uint(UINT64_MAX, buf, 0));
+    TEST_ASSERT_TRUE(untouched(buf, sizeof buf));
+}
+
+/* Over many values, every size: the length is the same whatever the room,
+ * and a short buffer is never written. */
+static void test_every_size_below_the_text_writes_nothing(void)
+{
+    uint32_t seed = 7;
+    int i;
+    for (i = 0; i < 2000; i++) {
+        char full[DARAN_U64_TEXT_MAX], want[DARAN_U64_TEXT_MAX + 1];
+        uint64_t u;
+        float f;
+        size_t n;
+        seed = seed * 1664525u + 1013904223u;
+        f = daran_float_of(seed);
+        n = daran_format_float(f, full, sizeof full);
+        memcpy(want, full, n);
+        want[n] = '\0';
+        EXPECT_SIZE_RULE(print_float, &f, want);
+        u = ((uint64_t)seed << 32 | (seed ^ 0x9E3779B9u)) >> (i % 64);
+        n = daran_format_uint(u, full, sizeof full);
+        memcpy(want, full, n);
+        want[n] = '\0';
+        EXPECT_SIZE_RULE(print_uint, &u, want);
     }
 }
 
@@ -618,6 +744,10 @@ int main(void)
     RUN_TEST(test_u64_prints_in_decimal);
     RUN_TEST(test_u64_printing_agrees_with_snprintf);
     RUN_TEST(test_u64_text_parses_back);
+    RUN_TEST(test_float_text_exactly_fits_its_length_and_not_one_byte_less);
+    RUN_TEST(test_uint_text_exactly_fits_its_length_and_not_one_byte_less);
+    RUN_TEST(test_size_0_writes_nothing);
+    RUN_TEST(test_every_size_below_the_text_writes_nothing);
     RUN_TEST(test_digits_past_the_exact_window_break_a_tie);
     return UNITY_END();
 }

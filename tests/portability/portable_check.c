@@ -21,7 +21,7 @@ static void emit_text(const char *text)
 static void emit_uint(uint64_t value)
 {
     char buf[DARAN_UINT_TEXT_MAX];
-    portable_emit(buf, daran_format_uint(value, buf));
+    portable_emit(buf, daran_format_uint(value, buf, sizeof buf));
 }
 
 static void emit_hex32(uint32_t value)
@@ -78,7 +78,7 @@ void portable_check(void)
         emit_text(" ");
         emit_hex32(bits);
         emit_text(" ");
-        portable_emit(buf, daran_format_float(f, buf));
+        portable_emit(buf, daran_format_float(f, buf, sizeof buf));
         emit_text(" u64 ");
         emit_uint((uint64_t)ru);
         emit_text(" ");

@@ -45,19 +45,19 @@ static void discard(void *ctx, const char *line, size_t len)
     (void)len;
 }
 
-static size_t value_text(daran_prop_t p, daran_value_t v, char *out)
+static size_t value_text(daran_prop_t p, daran_value_t v, char *out, size_t size)
 {
     switch (rows[p].type) {
     case DARAN_TYPE_F32:
-        return daran_format_float(v.f32, out);
+        return daran_format_float(v.f32, out, size);
     case DARAN_TYPE_S32:
         if (v.s32 < 0) {
             out[0] = '-';
-            return 1u + daran_format_uint((uint64_t)(-(int64_t)v.s32), out + 1);
+            return 1u + daran_format_uint((uint64_t)(-(int64_t)v.s32), out + 1, size - 1u);
         }
-        return daran_format_uint((uint64_t)v.s32, out);
+        return daran_format_uint((uint64_t)v.s32, out, size);
     default:
-        return daran_format_uint(v.u32, out);
+        return daran_format_uint(v.u32, out, size);
     }
 }
 
@@ -79,7 +79,7 @@ static bool w_accepts(daran_prop_t p, daran_value_t v)
     memcpy(line + n, rows[p].path, strlen(rows[p].path));
     n += strlen(rows[p].path);
     line[n++] = ' ';
-    n += value_text(p, v, line + n);
+    n += value_text(p, v, line + n, sizeof line - n);
     if (!rows[p].axis) {
         memcpy(line + n, " 1", 2u);
         n += 2u;
@@ -183,7 +183,7 @@ static void test_a_stored_value_loads_exactly_when_w_takes_it(void)
             by_w = w_accepts((daran_prop_t)p, v);
             by_load = load_accepts((daran_prop_t)p, v);
             if (by_w != by_load) {
-                text[value_text((daran_prop_t)p, v, text)] = '\0';
+                text[value_text((daran_prop_t)p, v, text, sizeof text - 1u)] = '\0';
                 FAIL_F("%s = %s: w %s it, the load %s it", rows[p].path, text,
                        by_w ? "takes" : "refuses", by_load ? "takes" : "refuses");
             }

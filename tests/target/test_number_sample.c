@@ -60,7 +60,7 @@ static void parse_sample(void)
 static void format_sample(void)
 {
     char buf[DARAN_F32_TEXT_MAX + 1];
-    size_t len = daran_format_f32(float_of(number_format_samples[sample].bits), buf);
+    size_t len = daran_format_float(float_of(number_format_samples[sample].bits), buf, sizeof buf);
     TEST_ASSERT_TRUE_MESSAGE(len <= DARAN_F32_TEXT_MAX, "text within DARAN_F32_TEXT_MAX");
     buf[len] = '\0';
     TEST_ASSERT_EQUAL_STRING(number_format_samples[sample].text, buf);

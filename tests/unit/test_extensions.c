@@ -212,13 +212,13 @@ static daran_result_t bq_handler(daran_drive_t *drive, const daran_args_t *args,
     }
     char text[64];
     size_t n = 0;
-    n += daran_format_uint(daran_args_count(args), text + n);
+    n += daran_format_uint(daran_args_count(args), text + n, sizeof text - n);
     text[n++] = ' ';
-    n += daran_format_uint(daran_args_motor(args), text + n);
+    n += daran_format_uint(daran_args_motor(args), text + n, sizeof text - n);
     text[n++] = ' ';
-    n += daran_format_uint(k, text + n);
+    n += daran_format_uint(k, text + n, sizeof text - n);
     text[n++] = ' ';
-    n += daran_format_float(0.1f, text + n);
+    n += daran_format_float(0.1f, text + n, sizeof text - n);
     daran_reply(drive, text, n);
     return DARAN_OK;
 }

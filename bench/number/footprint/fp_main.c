@@ -23,7 +23,7 @@ int main(void)
     g_out = (unsigned)snprintf(buf, sizeof buf, "%f", (double)g_value);
 #elif VARIANT == 3
     if (daran_parse_f32((const char *)g_text, 5, &f) == DARAN_OK) {
-        g_out = (unsigned)daran_format_f32(f, buf);
+        g_out = (unsigned)daran_format_float(f, buf, sizeof buf);
     }
 #endif
     return 0;
