@@ -68,7 +68,7 @@ def code_lines(text):
         if s.startswith("/*"):
             in_comment = "*/" not in s
             continue
-        if not s or s[0] in "#*" or s.startswith("//"):
+        if not s or s[0] == "#" or s.startswith("//"):
             continue
         yield i, line.split("/*")[0]
 
