@@ -11,6 +11,8 @@
  * flash; an inner loop per field saved 110 instructions a line for 72
  * bytes. Flash decided both: docs/performance.md.) */
 #include "framer.h"
+
+#include "compiler.h"
 #include "line.h"
 #include "rx_ring.h"
 
@@ -21,6 +23,7 @@ void daran_framer_reset(daran_drive_t *drive)
     drive->star_at = DARAN_LINE_MAX;
     drive->line_xor = 0;
     drive->fields.count = 0;
+    drive->fields.start[0] = 0; /* where the first field would start */
 }
 
 /* A byte that can be part of a field: printable, not blank, not '*'. */
@@ -29,88 +32,133 @@ static bool is_field_byte(uint8_t byte)
     return (uint8_t)(byte - 0x21u) < 0x5Eu && byte != '*';
 }
 
+/* Is this byte a line end: '\n', or from the ring the mark of a damaged one? */
+static bool is_line_end(uint8_t byte, bool from_ring)
+{
+    return byte == '\n' || (from_ring && byte == DARAN_RX_DAMAGED_END);
+}
+
+/* The byte at offset `at` is no field byte and comes before any '*': it ends
+ * the field that started at fields->start[count] if that is not empty, and
+ * the next one may start after it. Past DARAN_FIELDS_MAX fields nothing is
+ * recorded: the count stays there, and the line has too many fields whatever
+ * its command. */
+static unsigned end_field(daran_fields_t *fields, unsigned count, size_t at)
+{
+    if (count < DARAN_FIELDS_MAX) {
+        size_t start = fields->start[count];
+        if (at > start) {
+            fields->len[count] = (daran_line_offset_t)(at - start);
+            count++;
+        }
+        if (count < DARAN_FIELDS_MAX) {
+            fields->start[count] = (daran_line_offset_t)(at + 1u);
+        }
+    }
+    return count;
+}
+
+/* A byte that is no field byte, just stored at `stored` (`sum`: the XOR of
+ * the line up to and including it): it ends the field before it, and is
+ * noted if it is the first '*' or an invalid byte. Returns true for a line
+ * end, which is not part of the line. Out of the byte loop's way, so that
+ * loop keeps its values in registers. */
+static DARAN_NOINLINE bool other_byte(daran_drive_t *drive, const char *stored, unsigned sum,
+                                      bool from_ring)
+{
+    uint8_t byte = (uint8_t)*stored;
+    size_t at = (size_t)(stored - drive->line);
+    if (drive->star_at == DARAN_LINE_MAX) {
+        drive->fields.count = (uint8_t)end_field(&drive->fields, drive->fields.count, at);
+        if (byte == '*') {
+            drive->star_at = (uint16_t)at;
+            drive->line_xor = (uint8_t)(sum ^ (unsigned)'*'); /* the XOR before it */
+        }
+    }
+    if (is_line_end(byte, from_ring)) {
+        if (byte != '\n') {
+            drive->line_flags |= DARAN_LINE_DAMAGED;
+        }
+        return true;
+    }
+    if (!daran_byte_allowed(byte)) {
+        drive->line_flags |= DARAN_LINE_INVALID_BYTE;
+    }
+    return false;
+}
+
 size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, bool from_ring,
                          bool *ended)
 {
-    /* The state lives in locals while the loop runs: stores into the line
-     * buffer are char stores, which may alias anything, and would otherwise
-     * force every field of the instance to be reloaded for every byte. */
-    daran_fields_t *fields = &drive->fields;
     char *line = drive->line;
-    size_t len = drive->line_len;
-    size_t star_at = drive->star_at;
-    uint8_t flags = drive->line_flags;
-    uint8_t sum = drive->line_xor;
-    unsigned count = fields->count;
-    size_t i = 0;
-    *ended = false;
-    while (i < n) {
-        if (len >= DARAN_LINE_MAX) {
-            /* A full line takes only its line end; anything else makes it too
-             * long: discard up to the line end, which is still honoured. */
-            size_t end = i;
-            while (end < n && bytes[end] != '\n' && !(from_ring && bytes[end] == DARAN_RX_DAMAGED_END)) {
-                end++;
+    char *out = line + drive->line_len;
+    unsigned sum = drive->line_xor; /* a full register: no narrowing per byte */
+    if ((drive->line_flags & DARAN_LINE_IN_FIELD) != 0u) {
+        drive->fields.count--; /* the field the last bytes ended in goes on */
+    }
+    const uint8_t *in = bytes;
+    const uint8_t *all = bytes + n;
+    /* Every byte taken before the line end is stored: the line has room for
+     * the bytes up to `end`, so the loop checks no length of its own. */
+    size_t room = (size_t)(line + DARAN_LINE_MAX - out);
+    const uint8_t *end = bytes + (n < room ? n : room);
+    bool line_ended = false;
+    for (;;) {
+        /* A field byte is copied and XORed, nothing more. Any other byte is
+         * stored and XORed too (the sum before the '*' is kept when the '*'
+         * comes), then other_byte() decides. */
+        while (in != end) {
+            uint8_t byte = *in++;
+            *out = (char)byte;
+            sum ^= byte;
+            if (!is_field_byte(byte) && other_byte(drive, out, sum, from_ring)) {
+                line_ended = true;
+                goto done;
             }
-            if (end > i) {
-                flags |= DARAN_LINE_TOO_LONG;
-                i = end;
-            }
-            if (i == n) {
-                break;
-            }
+            out++;
         }
-        uint8_t byte = bytes[i++];
-        if (star_at == DARAN_LINE_MAX && is_field_byte(byte)) {
-            if ((flags & DARAN_LINE_IN_FIELD) == 0u) {
-                flags |= DARAN_LINE_IN_FIELD;
-                if (count < DARAN_FIELDS_MAX) {
-                    fields->start[count++] = (daran_line_offset_t)len;
-                }
-            }
-            line[len++] = (char)byte;
-            sum = (uint8_t)(sum ^ byte);
-            continue;
+        if (in == all) {
+            break; /* every byte taken; a field may go on in the next ones */
         }
-        if ((flags & DARAN_LINE_IN_FIELD) != 0u) {
-            /* Past DARAN_FIELDS_MAX fields this rewrites the last one's
-             * length, which is never read: the line has too many fields
-             * whatever its command. */
-            flags &= (uint8_t)~DARAN_LINE_IN_FIELD;
-            fields->len[count - 1u] = (daran_line_offset_t)(len - fields->start[count - 1u]);
+        /* A full line takes only its line end; anything else makes it too
+         * long: discard up to the line end, which is still honoured. */
+        const uint8_t *stop = in;
+        while (stop != all && !is_line_end(*stop, from_ring)) {
+            stop++;
         }
-        if (byte == ' ' && star_at == DARAN_LINE_MAX) {
-            line[len++] = ' ';
-            sum = (uint8_t)(sum ^ ' ');
-            continue;
+        if (stop != in) {
+            drive->line_flags |= DARAN_LINE_TOO_LONG;
+            in = stop;
         }
-        if (byte == '\n' || (from_ring && byte == DARAN_RX_DAMAGED_END)) {
-            if (byte != '\n') {
-                flags |= DARAN_LINE_DAMAGED;
-            }
-            *ended = true;
+        if (in == all) {
             break;
         }
-        line[len++] = (char)byte;
-        if (!daran_byte_allowed(byte)) {
-            flags |= DARAN_LINE_INVALID_BYTE;
+        /* the line end: it ends the last field, and is never stored */
+        if (drive->star_at == DARAN_LINE_MAX) {
+            drive->fields.count =
+                (uint8_t)end_field(&drive->fields, drive->fields.count, (size_t)(out - line));
         }
-        if (star_at == DARAN_LINE_MAX) {
-            if (byte == '*') {
-                star_at = len - 1u;
-            } else {
-                sum = (uint8_t)(sum ^ byte);
-            }
+        if (*in++ != '\n') {
+            drive->line_flags |= DARAN_LINE_DAMAGED;
         }
+        line_ended = true;
+        break;
     }
-    if ((flags & DARAN_LINE_IN_FIELD) != 0u) {
-        /* the field runs on into the next bytes, or the text ends in it */
-        fields->len[count - 1u] = (daran_line_offset_t)(len - fields->start[count - 1u]);
-    }
+done:;
+    size_t len = (size_t)(out - line);
     drive->line_len = (daran_line_offset_t)len;
-    drive->star_at = (uint16_t)star_at;
-    drive->line_flags = flags;
-    drive->line_xor = sum;
-    fields->count = (uint8_t)count;
-    return i;
+    drive->line_flags &= (uint8_t)~DARAN_LINE_IN_FIELD;
+    if (drive->star_at == DARAN_LINE_MAX) {
+        drive->line_xor = (uint8_t)sum;
+        /* The bytes end inside a field (a text without its line end, or the
+         * ring's run): count it, so the line is whole if nothing follows. */
+        daran_fields_t *fields = &drive->fields;
+        if (fields->count < DARAN_FIELDS_MAX && len > fields->start[fields->count]) {
+            fields->len[fields->count] = (daran_line_offset_t)(len - fields->start[fields->count]);
+            fields->count++;
+            drive->line_flags |= DARAN_LINE_IN_FIELD;
+        }
+    }
+    *ended = line_ended;
+    return n - (size_t)(all - in);
 }

@@ -27,13 +27,6 @@ static unsigned word_start(unsigned number)
     return number > 1u ? word_end(number - 2u) : 0u;
 }
 
-static char word_char(size_t i)
-{
-    size_t bit = i * 5u;
-    unsigned pair = (unsigned)word_text[bit >> 3] | (unsigned)word_text[(bit >> 3) + 1u] << 8;
-    return daran_word_char((pair >> (bit & 7u)) & 0x1Fu);
-}
-
 static unsigned path_start(unsigned prop)
 {
     return path_start_low[prop] | (unsigned)(path_info[prop] >> 6) << 8;
@@ -118,10 +111,7 @@ bool daran_range_holds_f32(daran_range_t range, float value)
         float low;
         float high;
         const char *high_text = t + dots + 2u;
-        size_t high_len = 0;
-        while (high_text[high_len] != '\0') {
-            high_len++;
-        }
+        size_t high_len = daran_text_len(high_text);
         return t[dots] != '\0' && daran_parse_f32(t, dots, &low) == DARAN_OK &&
                daran_parse_f32(high_text, high_len, &high) == DARAN_OK && value >= low &&
                value <= high;
@@ -148,19 +138,25 @@ daran_prop_t daran_discovery_next(size_t *cursor)
 #endif
 }
 
+/* The separator before segment k (k >= 1) of a path whose separator bits
+ * are @p dots. */
+static char separator(unsigned dots, unsigned k)
+{
+    return ((dots >> (k - 1u)) & 1u) != 0u ? '.' : '_';
+}
+
 size_t daran_property_path(daran_prop_t prop, char *out)
 {
-    unsigned dots = path_info[prop];
+    unsigned first = path_start(prop);
     unsigned end = path_start(prop + 1u);
     size_t len = 0;
-    for (unsigned k = path_start(prop); k < end; k++) {
-        if (len > 0u) {
-            out[len++] = (dots & 1u) != 0u ? '.' : '_';
-            dots >>= 1;
+    for (unsigned k = first; k < end; k++) {
+        if (k > first) {
+            out[len++] = separator(path_info[prop], k - first);
         }
         unsigned n = path_words[k];
-        for (size_t i = word_start(n); i < word_end(n - 1u); i++) {
-            out[len++] = word_char(i);
+        for (unsigned i = word_start(n); i < word_end(n - 1u); i++) {
+            out[len++] = word_text[i];
         }
     }
     return len;
@@ -183,19 +179,37 @@ const char *daran_unit_text(daran_property_t row)
     return daran_nth_text(unit_text, DARAN_PROPERTY_UNIT(row));
 }
 
-/* Does name[0..len) spell property @p prop's path? */
+/* Does name[0..len) spell property @p prop's path? Compared segment by
+ * segment against the stored text, the path never built. */
 static bool path_is(daran_prop_t prop, const char *name, size_t len)
 {
-    char path[DARAN_PATH_MAX];
-    if (daran_property_path(prop, path) != len) {
+    unsigned first = path_start(prop);
+    unsigned end = path_start(prop + 1u);
+    const char *at = name;
+    const char *name_end = name + len;
+    if (first == end) {
         return false; /* a row left out of this build has no path at all */
     }
-    for (size_t i = 0; i < len; i++) {
-        if (path[i] != name[i]) {
+    for (unsigned k = first; k < end; k++) {
+        if (k > first) {
+            if (at == name_end || *at++ != separator(path_info[prop], k - first)) {
+                return false;
+            }
+        }
+        unsigned n = path_words[k];
+        const char *text = word_text + word_start(n);
+        size_t text_len = word_end(n - 1u) - word_start(n);
+        if (text_len > (size_t)(name_end - at)) {
             return false;
         }
+        for (size_t i = 0; i < text_len; i++) {
+            if (at[i] != text[i]) {
+                return false;
+            }
+        }
+        at += text_len;
     }
-    return true;
+    return at == name_end;
 }
 
 daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t len,

@@ -19,9 +19,15 @@ void daran_reply_begin(daran_drive_t *drive)
     drive->reply_len = 0;
 }
 
+/* What the line may still take before the tail room. */
+static size_t reply_room(const daran_drive_t *drive)
+{
+    return DARAN_REPLY_MAX - TAIL_ROOM - drive->reply_len;
+}
+
 void daran_reply_text(daran_drive_t *drive, const char *text, size_t len)
 {
-    size_t room = DARAN_REPLY_MAX - TAIL_ROOM - drive->reply_len;
+    size_t room = reply_room(drive);
     if (len > room) {
         len = room; /* cannot happen: daran_config.h keeps DARAN_REPLY_MAX above the longest reply */
     }
@@ -41,16 +47,18 @@ void daran_reply_space(daran_drive_t *drive)
     daran_reply_text(drive, " ", 1);
 }
 
+/* Numbers go straight into the line: the printers write nothing when the
+ * text would not fit (daran_config.h keeps that from happening). */
 void daran_reply_f32(daran_drive_t *drive, float value)
 {
-    char text[DARAN_F32_TEXT_MAX];
-    daran_reply_text(drive, text, daran_format_float(value, text, sizeof text));
+    size_t len = daran_format_float(value, drive->reply + drive->reply_len, reply_room(drive));
+    drive->reply_len = (uint16_t)(drive->reply_len + len);
 }
 
 void daran_reply_u64(daran_drive_t *drive, uint64_t value)
 {
-    char text[DARAN_U64_TEXT_MAX];
-    daran_reply_text(drive, text, daran_format_uint(value, text, sizeof text));
+    size_t len = daran_format_uint(value, drive->reply + drive->reply_len, reply_room(drive));
+    drive->reply_len = (uint16_t)(drive->reply_len + len);
 }
 
 void daran_reply_end(daran_drive_t *drive)

@@ -15,6 +15,7 @@
 #include "rx_ring.h"
 
 #include <stdbool.h>
+#include <string.h>
 
 #include "atomics.h"
 
@@ -56,6 +57,30 @@ bool daran_rx_byte(daran_drive_t *drive, uint8_t byte)
     return daran_rx_write(drive, &byte, 1) == 1u;
 }
 
+/* Copy count bytes into consecutive slots, the marker value replaced: four
+ * bytes a step while none of them is the marker (one test for all four:
+ * the XOR makes the marker's bytes zero, and a zero byte is what the
+ * subtraction's borrow finds), then one at a time. */
+static void store_run(uint8_t *slots, const uint8_t *bytes, size_t count)
+{
+    const uint32_t ones = 0x01010101u;
+    while (count >= 4u) {
+        uint32_t word;
+        memcpy(&word, bytes, sizeof word);
+        uint32_t marks = word ^ (ones * DARAN_RX_DAMAGED_END);
+        if (((marks - ones) & ~marks & (ones * 0x80u)) != 0u) {
+            break;
+        }
+        memcpy(slots, &word, sizeof word);
+        slots += 4;
+        bytes += 4;
+        count -= 4u;
+    }
+    for (size_t i = 0; i < count; i++) {
+        slots[i] = stored(bytes[i]);
+    }
+}
+
 size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
 {
     daran_rx_ring_t *ring = &drive->rx;
@@ -67,10 +92,13 @@ size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
     if (!ring->producer_dropping) {
         /* The common case: copy what fits, one release for all of it. */
         size_t fast = len < room ? len : room;
-        for (; i < fast; i++) {
-            ring->bytes[(head + i) & MASK] = stored(bytes[i]);
-        }
+        size_t slot = head & MASK;
+        size_t to_end = DARAN_RX_RING_SIZE - slot;
+        size_t first = fast < to_end ? fast : to_end;
+        store_run(&ring->bytes[slot], bytes, first);
+        store_run(ring->bytes, bytes + first, fast - first);
         head = (uint16_t)(head + fast);
+        i = fast;
     }
     size_t queued = i;
     for (; i < len; i++) {

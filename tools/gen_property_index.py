@@ -197,8 +197,8 @@ def shared_segments(paths):
         words = re.split(r"([._])", path)
         split[path] = [words[0::2], words[1::2]]
 
-    def text_bytes(word):  # 5 bits a character and 10 of end position
-        return (5 * len(word) + 10) / 8.0
+    def text_bytes(word):  # a byte a character and 10 bits of end position
+        return (8 * len(word) + 10) / 8.0
 
     while True:
         pairs = {}
@@ -311,53 +311,16 @@ def generate(rows, omit, ranges):
     out.append("typedef %s daran_hash_slot_t;" % slot_type)
     out.append("")
     text = "".join(words)
-    alphabet = "".join(sorted(set(text), key=lambda c: c.encode()))
-    if len(alphabet) > 32:
-        sys.exit("gen_property_index: words use %d characters; 5 bits hold 32" % len(alphabet))
     if len(text) > 1023:
         sys.exit("gen_property_index: %d characters of words; 10 bits hold 1023" % len(text))
-    out.append("/* Every word once, sorted, without terminators, 5 bits a character")
-    out.append(" * (code n is DARAN_WORD_ALPHABET[n]), least significant bits first: */")
+    out.append("/* Every word once, sorted, without terminators, a byte a character: a")
+    out.append(" * path is compared and copied straight from here. */")
     for k in range(0, len(words), 12):
         out.append("/*   " + " ".join(words[k:k + 12]) + " */")
-    out.append("#define DARAN_WORD_ALPHABET " + c_string(alphabet))
-    # The character of a code, as arithmetic when the alphabet is digits,
-    # then capitals, then lower case, each run contiguous (a table otherwise).
-    runs = []
-    for ch in alphabet:
-        if runs and ord(ch) == ord(runs[-1][0]) + runs[-1][1]:
-            runs[-1][1] += 1
-        else:
-            runs.append([ch, 1])
-    out.append("static char daran_word_char(unsigned code)")
-    out.append("{")
-    if len(runs) <= 4:
-        first = 0
-        for ch, count in runs[:-1]:
-            out.append("    if (code < %du) {" % (first + count))
-            out.append("        return (char)('%s' + (code - %du));" % (ch, first))
-            out.append("    }")
-            first += count
-        out.append("    return (char)('%s' + (code - %du));" % (runs[-1][0], first))
-    else:
-        out.append("    return DARAN_WORD_ALPHABET[code];")
-    out.append("}")
-    bits = 0
-    nbits = 0
-    packed = []
-    for ch in text:
-        bits |= alphabet.index(ch) << nbits
-        nbits += 5
-        while nbits >= 8:
-            packed.append(bits & 0xFF)
-            bits >>= 8
-            nbits -= 8
-    packed.append(bits & 0xFF)
-    packed.append(0)  # a character is read as two bytes
-    out.append("static const uint8_t word_text[%d] = {" % len(packed))
-    for k in range(0, len(packed), 16):
-        out.append("    " + ", ".join("0x%02x" % b for b in packed[k:k + 16]) + ",")
-    out.append("};")
+    out.append("static const char word_text[%d] =" % len(text))
+    for k in range(0, len(text), 72):
+        out.append("    " + c_string(text[k:k + 72]))
+    out[-1] += ";"
     out.append("")
     ends = []
     pos = 0
@@ -450,7 +413,6 @@ def generate(rows, omit, ranges):
     out.append("")
     out.append("#endif /* DARAN_PROPERTY_INDEX_H */")
     stats = {"rows": len(rows), "kept": len(kept), "words": len(words), "text": len(text), "refs": len(refs),
-             "alphabet": len(alphabet),
              "slots": slots, "buckets": 1 << bucket_bits, "seed": seed}
     intervals = any(rows[i][3] == "F32" and ".." in range_text[rows[i][5]] for i in kept)
     features = "\n".join([
