@@ -11,10 +11,14 @@
     typedef char daran_static_assert_##what[(condition) ? 1 : -1]
 #endif
 
+/* Kept out of a hot loop's function, or folded into it whatever -Os would
+ * rather do: the loop's registers decide, not the call's size. */
 #if defined(__GNUC__) || defined(__clang__)
 #define DARAN_NOINLINE __attribute__((noinline))
+#define DARAN_ALWAYS_INLINE inline __attribute__((always_inline))
 #else
 #define DARAN_NOINLINE
+#define DARAN_ALWAYS_INLINE inline
 #endif
 
 #endif /* DARAN_COMPILER_H */

@@ -43,7 +43,7 @@ static bool is_line_end(uint8_t byte, bool from_ring)
  * the next one may start after it. Past DARAN_FIELDS_MAX fields nothing is
  * recorded: the count stays there, and the line has too many fields whatever
  * its command. */
-static unsigned end_field(daran_fields_t *fields, unsigned count, size_t at)
+static DARAN_ALWAYS_INLINE unsigned end_field(daran_fields_t *fields, unsigned count, size_t at)
 {
     if (count < DARAN_FIELDS_MAX) {
         size_t start = fields->start[count];
@@ -111,9 +111,15 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
             uint8_t byte = *in++;
             *out = (char)byte;
             sum ^= byte;
-            if (!is_field_byte(byte) && other_byte(drive, out, sum, from_ring)) {
-                line_ended = true;
-                goto done;
+            if (!is_field_byte(byte)) {
+                if (byte == ' ' && drive->star_at == DARAN_LINE_MAX) {
+                    /* a blank between fields, the most common of the others */
+                    drive->fields.count = (uint8_t)end_field(&drive->fields, drive->fields.count,
+                                                             (size_t)(out - drive->line));
+                } else if (other_byte(drive, out, sum, from_ring)) {
+                    line_ended = true;
+                    goto done;
+                }
             }
             out++;
         }

@@ -400,59 +400,60 @@ static int decimal_to_bits(uint64_t w, int32_t q, int truncated, uint32_t *bits)
     return hi <= UINT64_MAX - d && round_bits(hi + d, 0, e) == *bits;
 }
 
-/* The number hosts send most: [+-]?digits[.digits] (or .digits) with a
- * significand of at most 2^24 and at most 10 digits after the point. Both
- * operands of w / 10^k are then exact floats and one IEEE division rounds
- * correctly (decimal_to_bits' fast path), with none of the scan's
- * bookkeeping. 0: not such a number, the full road decides. */
+/* 10^k for k = 0..10, every one exact in a float. */
+static const float short_scale[11] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
+                                      1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
+
+/* The number hosts send most: [+-]?digits[.digits] (or .digits) with at
+ * most 9 digits, a significand of at most 2^24 and at most 10 digits after
+ * the point. Both operands of w / 10^k are then exact floats and one IEEE
+ * division rounds correctly (decimal_to_bits' fast path), with none of the
+ * scan's bookkeeping. 0: not such a number, the full road decides. */
 static int short_decimal(const char *t, size_t len, float *out)
 {
-    size_t i = 0;
-    size_t point = len;
+    const char *p = t;
+    const char *end = t + len;
     uint32_t w = 0;
-    float scale = 1.0f;
-    if (!DARAN_NUM_FAST_PATH || len == 0u) {
+    uint32_t d;
+    if (!DARAN_NUM_FAST_PATH || len == 0u || len > 11u) {
         return 0;
     }
-    if (t[0] == '-' || t[0] == '+') {
-        i = 1;
+    if (*p == '-' || *p == '+') {
+        p++;
     }
-    size_t first = i;
-    for (; i < len; i++) {
-        uint32_t d = (uint32_t)(unsigned char)t[i] - (uint32_t)'0';
-        if (d <= 9u) {
+    const char *digits = p;
+    while (p != end && (d = (uint32_t)(unsigned char)*p - (uint32_t)'0') <= 9u) {
+        w = w * 10u + d;
+        p++;
+    }
+    size_t whole = (size_t)(p - digits);
+    size_t fraction = 0;
+    if (p != end && *p == '.') {
+        const char *first = ++p;
+        while (p != end && (d = (uint32_t)(unsigned char)*p - (uint32_t)'0') <= 9u) {
             w = w * 10u + d;
-            if (w > (UINT32_C(1) << 24)) {
-                return 0;
-            }
-            if (point < i) {
-                scale *= 10.0f; /* exact up to 10^10 */
-            }
-        } else if (t[i] == '.' && point == len) {
-            point = i;
-        } else {
-            return 0;
+            p++;
         }
+        fraction = (size_t)(p - first);
     }
-    /* a digit, and at most 10 after the point */
-    if (len - first == (point < len ? 1u : 0u) || (point < len && len - point > 11u)) {
+    /* at most 11 characters: at most 9 digits here, so w did not wrap */
+    if (p != end || whole + fraction == 0u || w > (UINT32_C(1) << 24)) {
         return 0;
     }
-    float f = (float)w / scale;
-    *out = t[0] == '-' ? -f : f;
+    float f = (float)w;
+    if (fraction != 0u) {
+        f /= short_scale[fraction];
+    }
+    *out = *t == '-' ? -f : f;
     return 1;
 }
 
-daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
+/* Every other number: the full scan, then the exact decision. Kept apart so
+ * that daran_parse_f32() itself has no frame to set up for a short one. */
+static DARAN_NOINLINE daran_result_t parse_f32_full(const char *text, size_t len, float *out)
 {
     number_scan_t s;
     uint32_t bits = 0;
-    if ((text == NULL && len != 0) || out == NULL) {
-        return DARAN_ERR_BAD_ARGUMENT;
-    }
-    if (short_decimal(text, len, out)) {
-        return DARAN_OK;
-    }
     if (!number_scan(text, len, &s)) {
         return DARAN_ERR_INVALID_VALUE;
     }
@@ -470,6 +471,17 @@ daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
     bits |= (uint32_t)s.negative << 31;
     memcpy(out, &bits, sizeof bits);
     return DARAN_OK;
+}
+
+daran_result_t daran_parse_f32(const char *text, size_t len, float *out)
+{
+    if ((text == NULL && len != 0) || out == NULL) {
+        return DARAN_ERR_BAD_ARGUMENT;
+    }
+    if (short_decimal(text, len, out)) {
+        return DARAN_OK;
+    }
+    return parse_f32_full(text, len, out);
 }
 
 daran_result_t daran_parse_u64(const char *text, size_t len, uint64_t *out)
