@@ -415,7 +415,7 @@ static int short_decimal(const char *t, size_t len, float *out)
     const char *end = t + len;
     uint32_t w = 0;
     uint32_t d;
-    if (!DARAN_NUM_FAST_PATH || len == 0u || len > 11u) {
+    if (!DARAN_NUM_FAST_PATH || len == 0u) {
         return 0;
     }
     if (*p == '-' || *p == '+') {
@@ -436,8 +436,8 @@ static int short_decimal(const char *t, size_t len, float *out)
         }
         fraction = (size_t)(p - first);
     }
-    /* at most 11 characters: at most 9 digits here, so w did not wrap */
-    if (p != end || whole + fraction == 0u || w > (UINT32_C(1) << 24)) {
+    /* w wraps past 9 digits: such a number is the full road's */
+    if (p != end || whole + fraction - 1u > 8u || w > (UINT32_C(1) << 24)) {
         return 0;
     }
     float f = (float)w;
