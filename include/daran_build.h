@@ -63,6 +63,8 @@
                         DARAN_SIG_OMITTED_) ^                                                  \
      (uint32_t)DARAN_OMIT_LIST_SIGNATURE ^ (uint32_t)DARAN_PROP_COUNT << 22 ^                  \
      (uint32_t)DARAN_MOTOR_ID_MAX << 8 ^ (uint32_t)DARAN_REPLY_CRLF << 4 ^                     \
-     (uint32_t)DARAN_ENABLE_HELP << 5 ^ (uint32_t)DARAN_ENABLE_MULTI_MOTOR << 6)
+     (uint32_t)DARAN_ENABLE_HELP << 5 ^ (uint32_t)DARAN_ENABLE_MULTI_MOTOR << 6 ^               \
+     (uint32_t)DARAN_ENABLE_DISCOVERY << 7 ^ (uint32_t)DARAN_ENABLE_TELEMETRY << 16 ^            \
+     (uint32_t)DARAN_ENABLE_PORT_COMMANDS << 17 ^ (uint32_t)DARAN_ENABLE_S_CURVE << 18)
 
 #endif /* DARAN_BUILD_H */

@@ -64,6 +64,40 @@
 #define DARAN_ENABLE_MULTI_MOTOR 1
 #endif
 
+/** 1 (default when DARAN_ENABLE_HELP is 1): `h id properties [prefix]`,
+ * the property listing (discovery.c). 0 leaves it out: `h` then takes no
+ * argument after the id (`h 1 properties` answers `invalid format`, as any
+ * line with too many fields). Discovery is part of `h`, so it needs
+ * DARAN_ENABLE_HELP; it defaults to that option. */
+#ifndef DARAN_ENABLE_DISCOVERY
+#define DARAN_ENABLE_DISCOVERY DARAN_ENABLE_HELP
+#endif
+
+/** 1 (default): daran_telemetry_tick() writes telemetry reports, and `w`
+ * refuses a telemetry field set whose report might not fit DARAN_REPLY_MAX.
+ * 0 leaves both out: the tick returns DARAN_OK without a HAL call, and the
+ * telemetry rows (if the build keeps them) are plain settings. */
+#ifndef DARAN_ENABLE_TELEMETRY
+#define DARAN_ENABLE_TELEMETRY 1
+#endif
+
+/** 1 (default): the port's own commands (daran_set_port_commands(), the
+ * daran_args_*() parsers, daran_reply()). 0 leaves them out: the core knows
+ * only its own words, daran_set_port_commands() refuses any non-empty table
+ * (DARAN_ERR_BAD_ARGUMENT) and accepts none (count 0), and the parsers and
+ * daran_reply() are not in the library (a port that links a handler learns
+ * it at link time). */
+#ifndef DARAN_ENABLE_PORT_COMMANDS
+#define DARAN_ENABLE_PORT_COMMANDS 1
+#endif
+
+/** 1 (default): `mq` plans an S-curve when `axis0.trap_traj.config.traj_mode`
+ * reads 2 (one HAL get per `mq`). 0: `mq` always plans a trapezoid and never
+ * reads traj_mode; the drive must then run a TRAPEZOID move as a trapezoid. */
+#ifndef DARAN_ENABLE_S_CURVE
+#define DARAN_ENABLE_S_CURVE 1
+#endif
+
 /* DARAN_PORT_BARRIER(): not defined here. Only a core built as C99 (no
  * <stdatomic.h>) by a compiler without the GCC/clang __atomic builtins needs
  * it: the port's options header defines it as a full memory barrier of its
@@ -87,6 +121,21 @@
 #endif
 #if DARAN_ENABLE_MULTI_MOTOR != 0 && DARAN_ENABLE_MULTI_MOTOR != 1
 #error "DARAN_ENABLE_MULTI_MOTOR must be 0 or 1"
+#endif
+#if DARAN_ENABLE_DISCOVERY != 0 && DARAN_ENABLE_DISCOVERY != 1
+#error "DARAN_ENABLE_DISCOVERY must be 0 or 1"
+#endif
+#if DARAN_ENABLE_DISCOVERY && !DARAN_ENABLE_HELP
+#error "DARAN_ENABLE_DISCOVERY needs DARAN_ENABLE_HELP (discovery is `h id properties`)"
+#endif
+#if DARAN_ENABLE_TELEMETRY != 0 && DARAN_ENABLE_TELEMETRY != 1
+#error "DARAN_ENABLE_TELEMETRY must be 0 or 1"
+#endif
+#if DARAN_ENABLE_PORT_COMMANDS != 0 && DARAN_ENABLE_PORT_COMMANDS != 1
+#error "DARAN_ENABLE_PORT_COMMANDS must be 0 or 1"
+#endif
+#if DARAN_ENABLE_S_CURVE != 0 && DARAN_ENABLE_S_CURVE != 1
+#error "DARAN_ENABLE_S_CURVE must be 0 or 1"
 #endif
 #if DARAN_MOTOR_ID_MAX < 1 || DARAN_MOTOR_ID_MAX > 255
 #error "DARAN_MOTOR_ID_MAX must be within 1..255"

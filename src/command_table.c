@@ -46,8 +46,10 @@
     X("sz", 2, 2, 0, DARAN_ACTION_SET_ZERO, daran_cmd_action, "")            \
     X("st", 2, 2, 0, DARAN_ACTION_ESTOP, daran_cmd_action, "")
 
-#if DARAN_ENABLE_HELP
+#if DARAN_ENABLE_DISCOVERY
 #define HELP_COMMAND(X) X("h", 2, 4, READ, 0, help_command, "[properties [prefix]]")
+#elif DARAN_ENABLE_HELP
+#define HELP_COMMAND(X) X("h", 2, 2, READ, 0, help_command, "")
 #else
 #define HELP_COMMAND(X)
 #endif
@@ -98,7 +100,7 @@ static const char help_text[] = DARAN_COMMANDS(HELP_LINE);
 #undef HELP_LINE
 
 /* `h id`: a line per command, the core's then the port's; `h id properties
- * [prefix]`: discovery (discovery.c). */
+ * [prefix]`: discovery (discovery.c), in a build with it. */
 /* One `h` line: "<word> id <arguments>" (r and w take no id there). */
 static void help_line(daran_drive_t *drive, const char *word, size_t len, bool id,
                       const char *arguments)
@@ -117,9 +119,13 @@ static void help_line(daran_drive_t *drive, const char *word, size_t len, bool i
 
 static daran_result_t help_command(daran_drive_t *drive, const daran_request_t *request)
 {
+#if DARAN_ENABLE_DISCOVERY
     if (request->fields->count > 2u) {
         return daran_cmd_discovery(drive, request);
     }
+#else
+    (void)request;
+#endif
     const char *arguments = help_text;
     for (size_t i = 0; i < COMMAND_COUNT; i++) {
         const daran_command_t *command = &commands[i];
@@ -127,10 +133,12 @@ static daran_result_t help_command(daran_drive_t *drive, const daran_request_t *
                   (command->flags & DARAN_CMD_PATH) == 0u, arguments);
         arguments = daran_nth_text(arguments, 1);
     }
+#if DARAN_ENABLE_PORT_COMMANDS
     for (size_t i = 0; i < drive->port_command_count; i++) {
         const daran_port_command_t *command = &drive->port_commands[i];
         help_line(drive, command->word, daran_text_len(command->word), true, command->help);
     }
+#endif
     return DARAN_OK;
 }
 #endif

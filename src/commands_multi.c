@@ -72,6 +72,7 @@ static daran_result_t timed_move(float d, float t, float a, bool s_curve, daran_
     return DARAN_OK;
 }
 
+#if DARAN_ENABLE_S_CURVE
 /* S-curve planning when the drive says so; a port that left traj_mode out
  * of its table has trapezoids only. */
 static daran_result_t uses_s_curve(daran_drive_t *drive, bool *s_curve)
@@ -81,6 +82,15 @@ static daran_result_t uses_s_curve(daran_drive_t *drive, bool *s_curve)
     *s_curve = result == DARAN_OK && mode.u32 == 2u;
     return result == DARAN_ERR_INVALID_PROPERTY ? DARAN_OK : result;
 }
+#else
+/* A build without S-curves plans trapezoids and never asks traj_mode. */
+static daran_result_t uses_s_curve(daran_drive_t *drive, bool *s_curve)
+{
+    (void)drive;
+    *s_curve = false;
+    return DARAN_OK;
+}
+#endif
 
 /* The move a start makes of the preset. Positional starts aim at p1,
  * absolute or relative to the current position setpoint; `mq` reads p2 as a

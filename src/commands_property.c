@@ -70,9 +70,11 @@ static daran_result_t parse_property_value(daran_property_t row, const daran_fie
     if (!daran_range_holds(range, signed_value)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
+#if DARAN_ENABLE_TELEMETRY
     if (range == DARAN_RANGE_TELEMETRY && !daran_telemetry_fits((uint32_t)magnitude)) {
         return DARAN_ERR_OUT_OF_RANGE; /* its report might not fit DARAN_REPLY_MAX */
     }
+#endif
     if (type == DARAN_TYPE_S32) {
         value->s32 = (int32_t)signed_value;
     } else {

@@ -6,7 +6,7 @@
 #include "reply.h"
 #include "text.h"
 
-#if DARAN_ENABLE_HELP
+#if DARAN_ENABLE_DISCOVERY
 
 static const char type_names[] = "f32\0u32\0s32\0u64\0bool";
 
@@ -73,4 +73,4 @@ daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *
     return DARAN_OK;
 }
 
-#endif /* DARAN_ENABLE_HELP */
+#endif /* DARAN_ENABLE_DISCOVERY */

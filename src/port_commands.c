@@ -1,6 +1,8 @@
 /* The port's own commands: checking and keeping its table, finding a word
  * in it, and what a handler uses (the field parsers the core's handlers use,
- * and reply lines). */
+ * and reply lines). A build with DARAN_ENABLE_PORT_COMMANDS 0 keeps only a
+ * daran_set_port_commands() that takes no table, and a lookup that finds
+ * nothing. */
 #include "command.h"
 #include "handlers.h"
 #include "number.h"
@@ -8,6 +10,8 @@
 #include "text.h"
 
 #include "daran_port.h"
+
+#if DARAN_ENABLE_PORT_COMMANDS
 
 /* The length of a word of 1..DARAN_PORT_WORD_MAX lower-case letters, or 0. */
 static size_t word_length(const char *word)
@@ -148,3 +152,24 @@ void daran_reply(daran_drive_t *drive, const char *payload, size_t len)
     daran_reply_text(drive, payload, len);
     daran_reply_end(drive);
 }
+
+#else /* !DARAN_ENABLE_PORT_COMMANDS */
+
+daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_command_t *commands,
+                                       size_t count, void *ctx)
+{
+    (void)commands;
+    (void)ctx;
+    /* no table to keep: an empty one is what the drive has already */
+    return drive == NULL || count != 0u ? DARAN_ERR_BAD_ARGUMENT : DARAN_OK;
+}
+
+const daran_port_command_t *daran_find_port_command(const daran_drive_t *drive,
+                                                    const daran_field_t *word)
+{
+    (void)drive;
+    (void)word;
+    return NULL;
+}
+
+#endif /* DARAN_ENABLE_PORT_COMMANDS */

@@ -2,7 +2,8 @@
  * every `axis0.telemetry.period` seconds (whole control ticks, at least
  * one), with the values `axis0.telemetry.fields` selects, in bit order. The
  * port calls daran_telemetry_tick() once per control tick from the context
- * that runs daran_poll(), so a report never falls inside a reply. */
+ * that runs daran_poll(), so a report never falls inside a reply. A build
+ * with DARAN_ENABLE_TELEMETRY 0 keeps a tick that does nothing. */
 #include "compiler.h"
 #include "hal.h"
 #include "handlers.h"
@@ -11,6 +12,8 @@
 #include "telemetry.h"
 
 #include "daran_port.h"
+
+#if DARAN_ENABLE_TELEMETRY
 
 /* The widest text of each kind of value, with the space before it: a float,
  * the error register (a u32, 10 digits), the trajectory flag (one digit). */
@@ -105,3 +108,15 @@ daran_result_t daran_telemetry_tick(daran_drive_t *drive, uint32_t tick, uint32_
     drive->reply_wants_checksum = checksum;
     return result;
 }
+
+#else /* !DARAN_ENABLE_TELEMETRY */
+
+daran_result_t daran_telemetry_tick(daran_drive_t *drive, uint32_t tick, uint32_t tick_hz)
+{
+    (void)drive;
+    (void)tick;
+    (void)tick_hz;
+    return DARAN_OK;
+}
+
+#endif /* DARAN_ENABLE_TELEMETRY */

@@ -5,7 +5,11 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "daran_config.h"
+
+#if DARAN_ENABLE_TELEMETRY
 /* Can a report with these field bits always fit a reply? */
 bool daran_telemetry_fits(uint32_t fields);
+#endif
 
 #endif /* DARAN_TELEMETRY_H */
