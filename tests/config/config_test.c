@@ -107,16 +107,43 @@ static char *padded_query(size_t len)
     return line;
 }
 
+/* Does this build leave property @p prop out (its options header's
+ * DARAN_OMIT_PROPERTIES)? */
+static int omitted(daran_prop_t prop)
+{
+#ifdef DARAN_OMIT_PROPERTIES
+#define OMITTED_IS(id) || prop == DARAN_PROP_##id
+    return 0 DARAN_OMIT_PROPERTIES(OMITTED_IS);
+#undef OMITTED_IS
+#else
+    (void)prop;
+    return 0;
+#endif
+}
+
+/* The properties this build knows: the vendor's less the omitted ones (the
+ * configurations here add no rows of their own). */
+static unsigned kept_rows(void)
+{
+    unsigned rows = 0;
+    for (unsigned p = 0; p < (unsigned)DARAN_PROP_COUNT; p++) {
+        rows += omitted((daran_prop_t)p) ? 0u : 1u;
+    }
+    return rows;
+}
+
 static void test_config_matches_what_the_build_asked_for(int argc, char **argv)
 {
-    static const struct {
+    const struct {
         const char *name;
         long value;
     } options[] = {
         {"line_max", DARAN_LINE_MAX},         {"ring", DARAN_RX_RING_SIZE},
         {"reply_max", DARAN_REPLY_MAX},       {"crlf", DARAN_REPLY_CRLF},
         {"motor_id_max", DARAN_MOTOR_ID_MAX}, {"help", DARAN_ENABLE_HELP},
-        {"multi", DARAN_ENABLE_MULTI_MOTOR},
+        {"multi", DARAN_ENABLE_MULTI_MOTOR},  {"discovery", DARAN_ENABLE_DISCOVERY},
+        {"telemetry", DARAN_ENABLE_TELEMETRY}, {"port_commands", DARAN_ENABLE_PORT_COMMANDS},
+        {"s_curve", DARAN_ENABLE_S_CURVE},    {"prop_rows", (long)kept_rows()},
     };
     for (int a = 1; a < argc; a++) {
         const char *eq = strchr(argv[a], '=');
@@ -188,6 +215,138 @@ static void test_help_follows_enable_help(void)
 #else
     check(strcmp(replies, "error: unknown command" LE) == 0, "h_is_unknown_without_help",
           replies);
+#endif
+}
+
+static void test_discovery_follows_enable_discovery(void)
+{
+    reset();
+    send("h 1");
+#if DARAN_ENABLE_DISCOVERY
+    check(strstr(replies, LE "h id [properties [prefix]]" LE) != NULL,
+          "help_offers_discovery_with_discovery", replies);
+    expect_reply("discovery_lists_a_property", "h 1 properties vbus",
+                 "vbus_voltage f32 ro V" LE "end" LE);
+#elif DARAN_ENABLE_HELP
+    check(strstr(replies, LE "h id" LE) != NULL && strstr(replies, "properties") == NULL,
+          "help_offers_no_discovery_without_discovery", replies);
+    expect_reply("h_takes_no_argument_without_discovery", "h 1 properties",
+                 "error: invalid command format" LE);
+    expect_reply("h_takes_no_prefix_without_discovery", "h 1 properties vbus",
+                 "error: invalid command format" LE);
+#else
+    expect_reply("h_properties_is_unknown_without_help", "h 1 properties",
+                 "error: unknown command" LE);
+#endif
+}
+
+static void test_telemetry_follows_enable_telemetry(void)
+{
+    reset();
+    stub.values[DARAN_PROP_TELEMETRY_PERIOD].f32 = 0.01f;
+    stub.values[DARAN_PROP_TELEMETRY_FIELDS].u32 = 1u << 7; /* axis0.error */
+    stub.values[DARAN_PROP_AXIS_ERROR].u32 = 0x40u;
+    clear_replies();
+    daran_result_t result = daran_telemetry_tick(&drive, 0u, 1000u);
+#if DARAN_ENABLE_TELEMETRY
+    check(result == DARAN_OK && strncmp(replies, "@1 0 64 *", 9) == 0 && reply_count == 1u,
+          "telemetry_tick_reports_with_telemetry", replies);
+#else
+    check(result == DARAN_OK && reply_count == 0u, "telemetry_tick_does_nothing_without_telemetry",
+          replies);
+#endif
+    if (!omitted(DARAN_PROP_TELEMETRY_FIELDS)) {
+        /* the widest field set fits the default reply either way */
+        expect_reply("telemetry_fields_are_a_setting", "w axis1.telemetry.fields 511", "");
+    } else {
+        expect_reply("omitted_telemetry_fields_are_invalid", "w axis1.telemetry.fields 511",
+                     "error: invalid property" LE);
+    }
+}
+
+#if DARAN_ENABLE_PORT_COMMANDS
+static daran_result_t port_ping(daran_drive_t *d, const daran_args_t *args, void *ctx)
+{
+    (void)args;
+    (void)ctx;
+    daran_reply(d, "pong", 4);
+    return DARAN_OK;
+}
+#endif
+
+static void test_port_commands_follow_enable_port_commands(void)
+{
+#if DARAN_ENABLE_PORT_COMMANDS
+    static const daran_port_command_t table[] = {{"ping", 0, 0, DARAN_PORT_COMMAND_QUERY, port_ping, ""}};
+#else
+    /* a table the library would take, were it built with port commands */
+    static const daran_port_command_t table[] = {{"ping", 0, 0, DARAN_PORT_COMMAND_QUERY, NULL, ""}};
+#endif
+    reset();
+    check(daran_set_port_commands(&drive, table, 0, NULL) == DARAN_OK,
+          "an_empty_port_command_table_is_always_taken", "refused");
+    daran_result_t result = daran_set_port_commands(&drive, table, 1, NULL);
+#if DARAN_ENABLE_PORT_COMMANDS
+    check(result == DARAN_OK, "port_command_table_is_taken_with_port_commands", "refused");
+    expect_reply("port_command_runs_with_port_commands", "ping 1", "pong" LE);
+#else
+    check(result == DARAN_ERR_BAD_ARGUMENT,
+          "port_command_table_is_refused_without_port_commands", "taken");
+    expect_reply("port_word_is_unknown_without_port_commands", "ping 1",
+                 "error: unknown command" LE);
+#endif
+}
+
+#if DARAN_ENABLE_MULTI_MOTOR
+/* The stub HAL, with the last move and the reads of traj_mode recorded. */
+static daran_move_t last_move;
+static unsigned traj_mode_reads;
+
+static daran_result_t recording_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+{
+    traj_mode_reads += prop == DARAN_PROP_TRAJ_MODE ? 1u : 0u;
+    return daran_stub_hal.get(ctx, prop, out);
+}
+
+static daran_result_t recording_move(void *ctx, const daran_move_t *move)
+{
+    last_move = *move;
+    return daran_stub_hal.move(ctx, move);
+}
+
+#endif
+
+static void test_mq_plans_s_curves_with_enable_s_curve(void)
+{
+#if DARAN_ENABLE_MULTI_MOTOR
+    static daran_hal_t hal;
+    hal = daran_stub_hal;
+    hal.get = recording_get;
+    hal.move = recording_move;
+    daran_stub_init(&stub, OWN_ID);
+    if (daran_init(&drive, &hal, &stub, on_reply, NULL) != DARAN_OK) {
+        check(0, "mq_plans_s_curves_with_enable_s_curve", "daran_init failed");
+        return;
+    }
+    /* 120 degrees in 5 s at 10 (r/min)/s: an S-curve cruises at exactly
+     * 5 r/min (v = 2ad / (at + sqrt((at)^2 - 8ad)) = 14400 / 480 deg/s), a
+     * trapezoid at 4.38 (sqrt((at)^2 - 4ad) = sqrt(61200)) */
+    stub.values[DARAN_PROP_TRAJ_MODE].u32 = 2u;
+    stub.values[DARAN_PROP_TRAJECTORY_DONE].u32 = 1u;
+    traj_mode_reads = 0;
+    expect_reply("ms_before_mq", "ms 1 120 5 10", "");
+    expect_reply("mq_runs", "mq 1 0", "");
+    char detail[96];
+    snprintf(detail, sizeof detail, "cruise %.4f r/min, traj_mode read %u times",
+             (double)last_move.vel_rpm, traj_mode_reads);
+#if DARAN_ENABLE_S_CURVE
+    check(stub.moves == 1u && last_move.vel_rpm == 5.0f && traj_mode_reads == 1u,
+          "mq_plans_an_s_curve_when_traj_mode_is_2", detail);
+#else
+    check(stub.moves == 1u && last_move.vel_rpm > 4.38f && last_move.vel_rpm < 4.39f &&
+              traj_mode_reads == 0u,
+          "mq_plans_a_trapezoid_without_s_curve_and_never_reads_traj_mode", detail);
+#endif
 #endif
 }
 
@@ -266,7 +425,7 @@ static void test_longest_replies_fit_reply_max(void)
     }
     snprintf(line, sizeof line, "e 1*%u", line_sum);
     expect_reply("longest_e_reply_fits_reply_max", line, want);
-#if DARAN_ENABLE_HELP && DARAN_LINE_MAX >= 80
+#if DARAN_ENABLE_DISCOVERY && DARAN_LINE_MAX >= 80
     /* the longest discovery line */
     reset();
     send("h 1 properties axis0.config.extra_setting.enable_circular_setpoint_limit");
@@ -289,15 +448,21 @@ int main(int argc, char **argv)
     test_line_one_byte_over_line_max_is_too_long();
     test_replies_end_with_the_configured_line_end();
     test_help_follows_enable_help();
+    test_discovery_follows_enable_discovery();
+    test_telemetry_follows_enable_telemetry();
+    test_port_commands_follow_enable_port_commands();
+    test_mq_plans_s_curves_with_enable_s_curve();
     test_multi_motor_commands_follow_enable_multi_motor();
     test_motor_ids_stop_at_motor_id_max();
     test_rx_ring_holds_exactly_its_size();
     test_longest_replies_fit_reply_max();
     test_instance_holds_its_buffers();
     printf("config_test (LINE_MAX %d, RX_RING %d, REPLY_MAX %d, CRLF %d, ID_MAX %d, HELP %d, "
-           "MULTI %d, sizeof(daran_drive_t) %u): %u passed, %u failed\n",
+           "MULTI %d, DISCOVERY %d, TELEMETRY %d, PORT_COMMANDS %d, S_CURVE %d, %u properties, "
+           "sizeof(daran_drive_t) %u): %u passed, %u failed\n",
            DARAN_LINE_MAX, DARAN_RX_RING_SIZE, DARAN_REPLY_MAX, DARAN_REPLY_CRLF,
            DARAN_MOTOR_ID_MAX, DARAN_ENABLE_HELP, DARAN_ENABLE_MULTI_MOTOR,
-           (unsigned)sizeof(daran_drive_t), passed, failed);
+           DARAN_ENABLE_DISCOVERY, DARAN_ENABLE_TELEMETRY, DARAN_ENABLE_PORT_COMMANDS,
+           DARAN_ENABLE_S_CURVE, kept_rows(), (unsigned)sizeof(daran_drive_t), passed, failed);
     return failed == 0u ? 0 : 1;
 }

@@ -6,8 +6,9 @@
 #      package's version file answers SameMajorVersion;
 #   3. an install built with a user options header (DARAN_CONFIG_HEADER) still
 #      agrees with its consumers, and one built with other options is refused;
-#   4. five daran_config.h configurations (defaults, the issue's (b) and (c),
-#      the lower and the upper limits) each build the core and pass tests/config, and
+#   4. seven daran_config.h configurations (defaults, the issue's (b) and (c),
+#      the lower and the upper limits, discovery/telemetry/port commands/S-curve
+#      off, the seed-only header) each build the core and pass tests/config, and
 #      impossible options stop the compiler at #error.
 # Release flags, Ninja, no sanitizers; budget 2 minutes. Exits non-zero on the
 # first failure, after printing that step's log.
@@ -168,10 +169,10 @@ step "consumer: pkg-config of the configured install agrees on DARAN_LINE_MAX 25
 
 step "config (a): defaults, and impossible options stop at #error" \
   config_suite a -DDARAN_TEST_OPTION_ERRORS=ON \
-  "-DDARAN_TEST_EXPECT=line_max=128;ring=128;reply_max=160;crlf=1;motor_id_max=63;help=1;multi=1"
+  "-DDARAN_TEST_EXPECT=line_max=128;ring=128;reply_max=160;crlf=1;motor_id_max=63;help=1;multi=1;discovery=1;telemetry=1;port_commands=1;s_curve=1;prop_rows=165"
 step "config (b): DARAN_LINE_MAX=64, DARAN_REPLY_CRLF=0, DARAN_ENABLE_HELP=0, the core as C99" \
   config_suite b "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=64;DARAN_REPLY_CRLF=0;DARAN_ENABLE_HELP=0" \
-  -DDARAN_CORE_C_STANDARD=99 "-DDARAN_TEST_EXPECT=line_max=64;crlf=0;help=0;multi=1;ring=128"
+  -DDARAN_CORE_C_STANDARD=99 "-DDARAN_TEST_EXPECT=line_max=64;crlf=0;help=0;multi=1;ring=128;discovery=0"
 step "config (c): user header: no multi-motor, 32-byte ring, 256-byte lines" \
   config_suite c -DDARAN_CONFIG_HEADER="$repo/tests/config/config_c.h" \
   "-DDARAN_TEST_EXPECT=line_max=256;ring=32;multi=0;help=1;crlf=1"
@@ -186,5 +187,15 @@ step "config (e): lower limits: 32-byte lines, 16-byte ring, id 1 only, no help,
   config_suite e \
   "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=32;DARAN_RX_RING_SIZE=16;DARAN_MOTOR_ID_MAX=1;DARAN_ENABLE_HELP=0;DARAN_ENABLE_MULTI_MOTOR=0" \
   "-DDARAN_TEST_EXPECT=line_max=32;ring=16;motor_id_max=1;help=0;multi=0"
+# The features the seed document lacks, each compiled out (docs/porting.md 5.1),
+# with the vendor's whole table and the smallest reply a build may have.
+step "config (f): no discovery, telemetry, port commands or S-curve; 88-byte replies" \
+  config_suite f \
+  "-DDARAN_TEST_DEFINES=DARAN_ENABLE_DISCOVERY=0;DARAN_ENABLE_TELEMETRY=0;DARAN_ENABLE_PORT_COMMANDS=0;DARAN_ENABLE_S_CURVE=0;DARAN_REPLY_MAX=88" \
+  "-DDARAN_TEST_EXPECT=help=1;multi=1;discovery=0;telemetry=0;port_commands=0;s_curve=0;reply_max=88;prop_rows=165"
+# The seed-only build (the cortex-m4-seed preset's header) on the host.
+step "config (g): tests/config/seed_options.h: the seed's 57 rows, its features only" \
+  config_suite g -DDARAN_CONFIG_HEADER="$repo/tests/config/seed_options.h" \
+  "-DDARAN_TEST_EXPECT=help=1;multi=1;discovery=0;telemetry=0;port_commands=0;s_curve=0;prop_rows=57"
 
 ci_steps_end
