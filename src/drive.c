@@ -77,6 +77,13 @@ size_t daran_poll(daran_drive_t *drive)
     while (left != 0u) {
         const uint8_t *bytes;
         size_t run = daran_rx_run(&drive->rx, &bytes);
+        if (*bytes == '\n' && drive->line_len == 0u && drive->line_flags == 0u) {
+            /* An empty line: nothing to frame and nothing to answer (D5). */
+            daran_rx_skip(&drive->rx, 1);
+            left--;
+            lines++;
+            continue;
+        }
         bool ended = false;
         size_t taken = daran_framer_feed(drive, bytes, run < left ? run : left, true, &ended);
         left -= taken;

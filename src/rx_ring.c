@@ -94,9 +94,12 @@ size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
         size_t fast = len < room ? len : room;
         size_t slot = head & MASK;
         size_t to_end = DARAN_RX_RING_SIZE - slot;
-        size_t first = fast < to_end ? fast : to_end;
-        store_run(&ring->bytes[slot], bytes, first);
-        store_run(ring->bytes, bytes + first, fast - first);
+        if (fast <= to_end) {
+            store_run(&ring->bytes[slot], bytes, fast);
+        } else {
+            store_run(&ring->bytes[slot], bytes, to_end);
+            store_run(ring->bytes, bytes + to_end, fast - to_end);
+        }
         head = (uint16_t)(head + fast);
         i = fast;
     }
