@@ -13,53 +13,54 @@
 #define PATH DARAN_CMD_PATH
 #define READ_PATH (DARAN_CMD_READ | DARAN_CMD_PATH)
 
-/* X(word, min fields, max fields, flags, arg, handler, arguments for `h`
- * after the id: every command but r and w takes the motor id first, and `h`
- * prints it). t first: it is the command a host streams at 1 kHz. */
+/* X(name, the word's letters (the second 0 for a one-letter word), min
+ * fields, max fields, flags, arg, handler, arguments for `h` after the id:
+ * every command but r and w takes the motor id first, and `h` prints it).
+ * The order is `h`'s. */
 #define SINGLE_MOTION_COMMANDS(X)                                                               \
-    X("t", 3, 5, 0, DARAN_SHAPE_FILTERED, daran_cmd_motion, "pos [vel] [bw]")                     \
-    X("q", 3, 5, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_motion, "pos [vel] [acc]")                   \
-    X("p", 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_motion, "pos [vel_ff] [torque_ff]")        \
-    X("v", 3, 5, 0, DARAN_SHAPE_VELOCITY, daran_cmd_motion, "vel [param] [mode]")                 \
-    X("c", 3, 5, 0, DARAN_SHAPE_TORQUE, daran_cmd_motion, "torque [param] [mode]")                \
-    X("d", 7, 7, 0, DARAN_SHAPE_IMPEDANCE, daran_cmd_motion, "pdes vdes tff kp kd")
+    X(T, 't', 0, 3, 5, 0, DARAN_SHAPE_FILTERED, daran_cmd_motion, "pos [vel] [bw]")                     \
+    X(Q, 'q', 0, 3, 5, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_motion, "pos [vel] [acc]")                   \
+    X(P, 'p', 0, 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_motion, "pos [vel_ff] [torque_ff]")        \
+    X(V, 'v', 0, 3, 5, 0, DARAN_SHAPE_VELOCITY, daran_cmd_motion, "vel [param] [mode]")                 \
+    X(C, 'c', 0, 3, 5, 0, DARAN_SHAPE_TORQUE, daran_cmd_motion, "torque [param] [mode]")                \
+    X(D, 'd', 0, 7, 7, 0, DARAN_SHAPE_IMPEDANCE, daran_cmd_motion, "pdes vdes tff kp kd")
 
 #if DARAN_ENABLE_MULTI_MOTOR
 #define MULTI_MOTION_COMMANDS(X)                                                                \
-    X("ms", 2 + DARAN_PRESET_VALUES, 2 + DARAN_PRESET_VALUES, 0, 0, daran_cmd_ms, "p1 p2 p3")     \
-    X("mt", 3, 3, 0, DARAN_SHAPE_FILTERED, daran_cmd_start, "rel")                                \
-    X("mq", 3, 3, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_start, "rel")                               \
-    X("mp", 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_start, "rel")                             \
-    X("mv", 2, 2, 0, DARAN_SHAPE_VELOCITY, daran_cmd_start, "")                                   \
-    X("mc", 2, 2, 0, DARAN_SHAPE_TORQUE, daran_cmd_start, "")
+    X(MS, 'm', 's', 2 + DARAN_PRESET_VALUES, 2 + DARAN_PRESET_VALUES, 0, 0, daran_cmd_ms, "p1 p2 p3")     \
+    X(MT, 'm', 't', 3, 3, 0, DARAN_SHAPE_FILTERED, daran_cmd_start, "rel")                                \
+    X(MQ, 'm', 'q', 3, 3, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_start, "rel")                               \
+    X(MP, 'm', 'p', 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_start, "rel")                             \
+    X(MV, 'm', 'v', 2, 2, 0, DARAN_SHAPE_VELOCITY, daran_cmd_start, "")                                   \
+    X(MC, 'm', 'c', 2, 2, 0, DARAN_SHAPE_TORQUE, daran_cmd_start, "")
 #else
 #define MULTI_MOTION_COMMANDS(X)
 #endif
 
 #define PROPERTY_AND_SYSTEM_COMMANDS(X)                                      \
-    X("r", 2, 3, READ_PATH, 0, daran_cmd_r, "path [id]")                       \
-    X("w", 3, 4, PATH, 0, daran_cmd_w, "path value [id]")                      \
-    X("ss", 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, daran_cmd_action, "")         \
-    X("se", 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, daran_cmd_action, "")        \
-    X("sr", 2, 2, 0, DARAN_ACTION_REBOOT, daran_cmd_action, "")              \
-    X("sc", 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, daran_cmd_action, "")        \
-    X("sz", 2, 2, 0, DARAN_ACTION_SET_ZERO, daran_cmd_action, "")            \
-    X("st", 2, 2, 0, DARAN_ACTION_ESTOP, daran_cmd_action, "")
+    X(R, 'r', 0, 2, 3, READ_PATH, 0, daran_cmd_r, "path [id]")                       \
+    X(W, 'w', 0, 3, 4, PATH, 0, daran_cmd_w, "path value [id]")                      \
+    X(SS, 's', 's', 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, daran_cmd_action, "")         \
+    X(SE, 's', 'e', 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, daran_cmd_action, "")        \
+    X(SR, 's', 'r', 2, 2, 0, DARAN_ACTION_REBOOT, daran_cmd_action, "")              \
+    X(SC, 's', 'c', 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, daran_cmd_action, "")        \
+    X(SZ, 's', 'z', 2, 2, 0, DARAN_ACTION_SET_ZERO, daran_cmd_action, "")            \
+    X(ST, 's', 't', 2, 2, 0, DARAN_ACTION_ESTOP, daran_cmd_action, "")
 
 #if DARAN_ENABLE_DISCOVERY
-#define HELP_COMMAND(X) X("h", 2, 4, READ, 0, help_command, "[properties [prefix]]")
+#define HELP_COMMAND(X) X(H, 'h', 0, 2, 4, READ, 0, help_command, "[properties [prefix]]")
 #elif DARAN_ENABLE_HELP
-#define HELP_COMMAND(X) X("h", 2, 2, READ, 0, help_command, "")
+#define HELP_COMMAND(X) X(H, 'h', 0, 2, 2, READ, 0, help_command, "")
 #else
 #define HELP_COMMAND(X)
 #endif
 
 #define QUERY_COMMANDS(X)                                                                       \
-    X("f", 2, 2, READ, 0, daran_cmd_feedback, "")                                                 \
-    X("g", 2, 2, READ, 0, daran_cmd_power, "")                                                    \
-    X("i", 2, 2, READ, 0, daran_cmd_identity, "")                                                 \
-    X("e", 2, 2, READ, 0, daran_cmd_errors, "")                                                   \
-    X("u", 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, daran_cmd_action, "")
+    X(F, 'f', 0, 2, 2, READ, 0, daran_cmd_feedback, "")                                                 \
+    X(G, 'g', 0, 2, 2, READ, 0, daran_cmd_power, "")                                                    \
+    X(I, 'i', 0, 2, 2, READ, 0, daran_cmd_identity, "")                                                 \
+    X(E, 'e', 0, 2, 2, READ, 0, daran_cmd_errors, "")                                                   \
+    X(U, 'u', 0, 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, daran_cmd_action, "")
 
 #define DARAN_COMMANDS(X)                                                  \
     SINGLE_MOTION_COMMANDS(X) MULTI_MOTION_COMMANDS(X)                     \
@@ -70,32 +71,45 @@
  * tell "too many" (the count saturates at DARAN_FIELDS_MAX); a motion
  * command's values fit the handler's array and its shape; `w` has a value
  * field; discovery's `h id properties prefix` fits. */
-#define FIELDS_WRONG(word, min, max, flags, arg, handler, help) \
+#define FIELDS_WRONG(name, c0, c1, min, max, flags, arg, handler, help) \
     | ((min) >= 2 && (min) <= (max) && (max) < DARAN_FIELDS_MAX ? 0 : 1)
 DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(FIELDS_WRONG)) == 0, command_field_counts_fit_the_fields);
 #undef FIELDS_WRONG
-#define MOTION_VALUES_WRONG(word, min, max, flags, arg, handler, help) \
+#define MOTION_VALUES_WRONG(name, c0, c1, min, max, flags, arg, handler, help) \
     | ((max) - 2 <= (int)DARAN_MOTION_VALUES_MAX ? 0 : 1)
 DARAN_STATIC_ASSERT((0 SINGLE_MOTION_COMMANDS(MOTION_VALUES_WRONG)) == 0,
                     motion_values_fit_the_handler);
 #undef MOTION_VALUES_WRONG
-#define W_WRONG(word, min, max, flags, arg, handler, help) | ((flags) == PATH && (min) < 3 ? 1 : 0)
+#define W_WRONG(name, c0, c1, min, max, flags, arg, handler, help) | ((flags) == PATH && (min) < 3 ? 1 : 0)
 DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(W_WRONG)) == 0, w_has_a_value);
 #undef W_WRONG
-#define H_WRONG(word, min, max, flags, arg, handler, help) | ((max) > 4 ? 1 : 0)
+#define H_WRONG(name, c0, c1, min, max, flags, arg, handler, help) | ((max) > 4 ? 1 : 0)
 DARAN_STATIC_ASSERT((0 HELP_COMMAND(H_WRONG)) == 0, h_has_at_most_a_prefix);
 #undef H_WRONG
 
-#define COMMAND_ROW(word, min, max, flags, arg, handler, help) \
-    {word, (uint8_t)((min) << 4 | (max)), flags, (uint8_t)(arg)},
+#define COMMAND_ROW(name, c0, c1, min, max, flags, arg, handler, help) \
+    {{c0, c1}, (uint8_t)((min) << 4 | (max)), flags, (uint8_t)(arg)},
 static const daran_command_t commands[] = {DARAN_COMMANDS(COMMAND_ROW)};
 #undef COMMAND_ROW
 
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
 
+/* Where a word is found: its two lower-case letters XORed give one of 64
+ * slots, which holds its row number + 1 (0: no command). No two of the
+ * words share a slot: a second initializer of one is an error
+ * (-Woverride-init, part of -Wextra, under -Werror). */
+#define WORD_SLOT(c0, c1) (((unsigned)(c0) ^ (unsigned)(c1)) & 63u)
+#define ROW_NUMBER(name, c0, c1, min, max, flags, arg, handler, help) ROW_##name,
+enum command_row { DARAN_COMMANDS(ROW_NUMBER) ROW_COUNT };
+#undef ROW_NUMBER
+#define SLOT_OF(name, c0, c1, min, max, flags, arg, handler, help) \
+    [WORD_SLOT(c0, c1)] = (uint8_t)(ROW_##name + 1),
+static const uint8_t row_of_slot[64] = {DARAN_COMMANDS(SLOT_OF)};
+#undef SLOT_OF
+
 #if DARAN_ENABLE_HELP
 /* Every command's help arguments after the id, each ending in '\0', in table order. */
-#define HELP_LINE(word, min, max, flags, arg, handler, help) help "\0"
+#define HELP_LINE(name, c0, c1, min, max, flags, arg, handler, help) help "\0"
 static const char help_text[] = DARAN_COMMANDS(HELP_LINE);
 #undef HELP_LINE
 
@@ -146,7 +160,7 @@ static daran_result_t help_command(daran_drive_t *drive, const daran_request_t *
 /* Row i's handler, from the same list: a row names its handler, and a row
  * stays 5 bytes (a pointer in it would pad it to 12). */
 typedef daran_result_t (*handler_fn)(daran_drive_t *drive, const daran_request_t *request);
-#define HANDLER_OF(word, min, max, flags, arg, handler, help) handler,
+#define HANDLER_OF(name, c0, c1, min, max, flags, arg, handler, help) handler,
 static handler_fn const command_handlers[] = {DARAN_COMMANDS(HANDLER_OF)};
 #undef HANDLER_OF
 
@@ -155,12 +169,16 @@ const daran_command_t *daran_find_command(const daran_field_t *word)
     if (word->len == 0u || word->len > 2u) {
         return NULL;
     }
-    for (size_t i = 0; i < COMMAND_COUNT; i++) {
-        if (daran_word_is(word->text, word->len, commands[i].word, sizeof commands[i].word)) {
-            return &commands[i];
-        }
+    /* one bit lowers a letter, and maps nothing else onto one */
+    unsigned c0 = (unsigned char)word->text[0] | 0x20u;
+    unsigned c1 = word->len == 2u ? (unsigned char)word->text[1] | 0x20u : 0u;
+    unsigned row = row_of_slot[WORD_SLOT(c0, c1)];
+    if (row == 0u) {
+        return NULL;
     }
-    return NULL;
+    const daran_command_t *command = &commands[row - 1u];
+    return daran_word_is(word->text, word->len, command->word, sizeof command->word) ? command
+                                                                                     : NULL;
 }
 
 daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *request)
