@@ -18,33 +18,34 @@
  * every command but r and w takes the motor id first, and `h` prints it).
  * The order is `h`'s. */
 #define SINGLE_MOTION_COMMANDS(X)                                                               \
-    X(T, 't', 0, 3, 5, 0, DARAN_SHAPE_FILTERED, daran_cmd_motion, "pos [vel] [bw]")                     \
-    X(Q, 'q', 0, 3, 5, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_motion, "pos [vel] [acc]")                   \
-    X(P, 'p', 0, 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_motion, "pos [vel_ff] [torque_ff]")        \
-    X(V, 'v', 0, 3, 5, 0, DARAN_SHAPE_VELOCITY, daran_cmd_motion, "vel [param] [mode]")                 \
-    X(C, 'c', 0, 3, 5, 0, DARAN_SHAPE_TORQUE, daran_cmd_motion, "torque [param] [mode]")                \
+    X(T, 't', 0, 3, 5, 0, DARAN_SHAPE_FILTERED, daran_cmd_motion, "pos [vel] [bw]")                \
+    X(Q, 'q', 0, 3, 5, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_motion, "pos [vel] [acc]")              \
+    X(P, 'p', 0, 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_motion, "pos [vel_ff] [torque_ff]")   \
+    X(V, 'v', 0, 3, 5, 0, DARAN_SHAPE_VELOCITY, daran_cmd_motion, "vel [param] [mode]")            \
+    X(C, 'c', 0, 3, 5, 0, DARAN_SHAPE_TORQUE, daran_cmd_motion, "torque [param] [mode]")           \
     X(D, 'd', 0, 7, 7, 0, DARAN_SHAPE_IMPEDANCE, daran_cmd_motion, "pdes vdes tff kp kd")
 
 #if DARAN_ENABLE_MULTI_MOTOR
+#define PRESET_FIELDS (2 + DARAN_PRESET_VALUES) /* ms id p1 p2 p3 */
 #define MULTI_MOTION_COMMANDS(X)                                                                \
-    X(MS, 'm', 's', 2 + DARAN_PRESET_VALUES, 2 + DARAN_PRESET_VALUES, 0, 0, daran_cmd_ms, "p1 p2 p3")     \
-    X(MT, 'm', 't', 3, 3, 0, DARAN_SHAPE_FILTERED, daran_cmd_start, "rel")                                \
-    X(MQ, 'm', 'q', 3, 3, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_start, "rel")                               \
-    X(MP, 'm', 'p', 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_start, "rel")                             \
-    X(MV, 'm', 'v', 2, 2, 0, DARAN_SHAPE_VELOCITY, daran_cmd_start, "")                                   \
+    X(MS, 'm', 's', PRESET_FIELDS, PRESET_FIELDS, 0, 0, daran_cmd_ms, "p1 p2 p3")                  \
+    X(MT, 'm', 't', 3, 3, 0, DARAN_SHAPE_FILTERED, daran_cmd_start, "rel")                         \
+    X(MQ, 'm', 'q', 3, 3, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_start, "rel")                        \
+    X(MP, 'm', 'p', 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_start, "rel")                      \
+    X(MV, 'm', 'v', 2, 2, 0, DARAN_SHAPE_VELOCITY, daran_cmd_start, "")                            \
     X(MC, 'm', 'c', 2, 2, 0, DARAN_SHAPE_TORQUE, daran_cmd_start, "")
 #else
 #define MULTI_MOTION_COMMANDS(X)
 #endif
 
 #define PROPERTY_AND_SYSTEM_COMMANDS(X)                                      \
-    X(R, 'r', 0, 2, 3, READ_PATH, 0, daran_cmd_r, "path [id]")                       \
-    X(W, 'w', 0, 3, 4, PATH, 0, daran_cmd_w, "path value [id]")                      \
-    X(SS, 's', 's', 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, daran_cmd_action, "")         \
-    X(SE, 's', 'e', 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, daran_cmd_action, "")        \
-    X(SR, 's', 'r', 2, 2, 0, DARAN_ACTION_REBOOT, daran_cmd_action, "")              \
-    X(SC, 's', 'c', 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, daran_cmd_action, "")        \
-    X(SZ, 's', 'z', 2, 2, 0, DARAN_ACTION_SET_ZERO, daran_cmd_action, "")            \
+    X(R, 'r', 0, 2, 3, READ_PATH, 0, daran_cmd_r, "path [id]")                                     \
+    X(W, 'w', 0, 3, 4, PATH, 0, daran_cmd_w, "path value [id]")                                    \
+    X(SS, 's', 's', 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, daran_cmd_action, "")                       \
+    X(SE, 's', 'e', 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, daran_cmd_action, "")                      \
+    X(SR, 's', 'r', 2, 2, 0, DARAN_ACTION_REBOOT, daran_cmd_action, "")                            \
+    X(SC, 's', 'c', 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, daran_cmd_action, "")                      \
+    X(SZ, 's', 'z', 2, 2, 0, DARAN_ACTION_SET_ZERO, daran_cmd_action, "")                          \
     X(ST, 's', 't', 2, 2, 0, DARAN_ACTION_ESTOP, daran_cmd_action, "")
 
 #if DARAN_ENABLE_DISCOVERY
@@ -56,10 +57,10 @@
 #endif
 
 #define QUERY_COMMANDS(X)                                                                       \
-    X(F, 'f', 0, 2, 2, READ, 0, daran_cmd_feedback, "")                                                 \
-    X(G, 'g', 0, 2, 2, READ, 0, daran_cmd_power, "")                                                    \
-    X(I, 'i', 0, 2, 2, READ, 0, daran_cmd_identity, "")                                                 \
-    X(E, 'e', 0, 2, 2, READ, 0, daran_cmd_errors, "")                                                   \
+    X(F, 'f', 0, 2, 2, READ, 0, daran_cmd_feedback, "")                                            \
+    X(G, 'g', 0, 2, 2, READ, 0, daran_cmd_power, "")                                               \
+    X(I, 'i', 0, 2, 2, READ, 0, daran_cmd_identity, "")                                            \
+    X(E, 'e', 0, 2, 2, READ, 0, daran_cmd_errors, "")                                              \
     X(U, 'u', 0, 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, daran_cmd_action, "")
 
 #define DARAN_COMMANDS(X)                                                  \
@@ -80,7 +81,8 @@ DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(FIELDS_WRONG)) == 0, command_field_counts_
 DARAN_STATIC_ASSERT((0 SINGLE_MOTION_COMMANDS(MOTION_VALUES_WRONG)) == 0,
                     motion_values_fit_the_handler);
 #undef MOTION_VALUES_WRONG
-#define W_WRONG(name, c0, c1, min, max, flags, arg, handler, help) | ((flags) == PATH && (min) < 3 ? 1 : 0)
+#define W_WRONG(name, c0, c1, min, max, flags, arg, handler, help) \
+    | ((flags) == PATH && (min) < 3 ? 1 : 0)
 DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(W_WRONG)) == 0, w_has_a_value);
 #undef W_WRONG
 #define H_WRONG(name, c0, c1, min, max, flags, arg, handler, help) | ((max) > 4 ? 1 : 0)
