@@ -3,6 +3,8 @@
  * each step is exact). Single-precision FPU only: no double, no libc number
  * functions, no heap; the one big scratch is ~120 bytes in the rare slow path. */
 #include "number.h"
+
+#include "compiler.h"
 #include "text.h"
 
 #include <float.h>
@@ -307,12 +309,6 @@ static int big_cmp(const number_big_t *a, const number_big_t *b)
     return 0;
 }
 
-#if defined(__GNUC__) || defined(__clang__)
-#define DARAN_NOINLINE __attribute__((noinline))
-#else
-#define DARAN_NOINLINE
-#endif
-
 /* The exact decision between lo and lo + 1: compare the decimal (digits from
  * index z) with the halfway point between the two floats, in big integers.
  * Never inlined: its two big integers must not sit in the caller's frame on
@@ -409,7 +405,7 @@ static const float short_scale[11] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
  * the point. Both operands of w / 10^k are then exact floats and one IEEE
  * division rounds correctly (decimal_to_bits' fast path), with none of the
  * scan's bookkeeping. 0: not such a number, the full road decides. */
-static int short_decimal(const char *t, size_t len, float *out)
+static DARAN_NOINLINE int short_decimal(const char *t, size_t len, float *out)
 {
     const char *p = t;
     const char *end = t + len;
