@@ -6,6 +6,7 @@
  * it can be, and one comparison of that property's words decides. The
  * cost depends on the path's length only, never on how many rows the table
  * has. */
+#include "compiler.h"
 #include "number.h"
 #include "property.h"
 #include "reply.h"
@@ -17,17 +18,17 @@
 #include "property_features.h"
 
 /* The packed tables' entries (see the generated header for the layout). */
-static unsigned word_end(unsigned n)
+static DARAN_ALWAYS_INLINE unsigned word_end(unsigned n)
 {
     return word_end_low[n] | (((unsigned)word_end_high[n >> 2] >> ((n & 3u) * 2u)) & 3u) << 8;
 }
 
-static unsigned word_start(unsigned number)
+static DARAN_ALWAYS_INLINE unsigned word_start(unsigned number)
 {
     return number > 1u ? word_end(number - 2u) : 0u;
 }
 
-static unsigned path_start(unsigned prop)
+static DARAN_ALWAYS_INLINE unsigned path_start(unsigned prop)
 {
     return path_start_low[prop] | (unsigned)(path_info[prop] >> 6) << 8;
 }
@@ -155,8 +156,10 @@ size_t daran_property_path(daran_prop_t prop, char *out)
             out[len++] = separator(path_info[prop], k - first);
         }
         unsigned n = path_words[k];
-        for (unsigned i = word_start(n); i < word_end(n - 1u); i++) {
-            out[len++] = word_text[i];
+        const char *text = word_text + word_start(n);
+        const char *text_end = word_text + word_end(n - 1u);
+        while (text != text_end) {
+            out[len++] = *text++;
         }
     }
     return len;

@@ -938,6 +938,32 @@ static void test_the_error_registers_are_exactly_the_zero_range_rows(void)
     }
 }
 
+/* `e` stores its line names as text (commands_query.c): each must be its
+ * register's path from the table, without ".error" ("axis" for "error"). */
+static void test_e_names_each_register_by_its_path(void)
+{
+    static const daran_prop_t registers[] = {
+        DARAN_PROP_AXIS_ERROR, DARAN_PROP_MOTOR_ERROR, DARAN_PROP_ENCODER_ERROR,
+        DARAN_PROP_CONTROLLER_ERROR, DARAN_PROP_FET_THERMISTOR_ERROR,
+        DARAN_PROP_MOTOR_THERMISTOR_ERROR, DARAN_PROP_CAN_ERROR,
+    };
+    char want[512] = "";
+    for (size_t i = 0; i < sizeof registers / sizeof registers[0]; i++) {
+        const char *path = rows[registers[i]].path;
+        size_t len = strlen(path) - strlen(".error");
+        TEST_ASSERT_EQUAL_STRING(".error", strcmp(path, "error") == 0 ? ".error" : path + len);
+        char line[80];
+        if (strcmp(path, "error") == 0)
+            snprintf(line, sizeof line, "axis: 0\n");
+        else
+            snprintf(line, sizeof line, "%.*s: 0\n", (int)len, path);
+        strcat(want, line);
+    }
+    mock_t *m = mock_new();
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_process_line(&m->drive, "e 1", 3));
+    TEST_ASSERT_EQUAL_STRING(want, m->out);
+}
+
 /* ---- rates that may be 0 (spec 10.1: "the corresponding properties") ---- */
 
 static void test_rate_properties_accept_0_and_refuse_negatives(void)
@@ -1024,6 +1050,7 @@ int main(void)
     ADD(test_s32_reads_are_decimal_with_a_minus_when_negative);
     ADD(test_a_u32_takes_no_sign);
     ADD(test_the_error_registers_are_exactly_the_zero_range_rows);
+    ADD(test_e_names_each_register_by_its_path);
     ADD(test_rate_properties_accept_0_and_refuse_negatives);
     ADD(test_the_mock_traj_mode_defaults_to_the_trapezoid);
     mock_suite_run(&s);
