@@ -1,8 +1,8 @@
 /* The port's own commands: checking and keeping its table, finding a word
  * in it, and what a handler uses (the field parsers the core's handlers use,
  * and reply lines). A build with DARAN_ENABLE_PORT_COMMANDS 0 keeps only a
- * daran_set_port_commands() that takes no table, and a lookup that finds
- * nothing. */
+ * daran_set_port_commands() that takes no table; the lookup that finds
+ * nothing is inline in command.h, so the dispatcher's port branch goes. */
 #include "command.h"
 #include "handlers.h"
 #include "number.h"
@@ -162,14 +162,6 @@ daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_co
     (void)ctx;
     /* no table to keep: an empty one is what the drive has already */
     return drive == NULL || count != 0u ? DARAN_ERR_BAD_ARGUMENT : DARAN_OK;
-}
-
-const daran_port_command_t *daran_find_port_command(const daran_drive_t *drive,
-                                                    const daran_field_t *word)
-{
-    (void)drive;
-    (void)word;
-    return NULL;
 }
 
 #endif /* DARAN_ENABLE_PORT_COMMANDS */

@@ -32,6 +32,7 @@ daran_property_t daran_property_row(daran_prop_t prop);
 daran_result_t daran_find_property(daran_scope_t scope, const char *name, size_t len,
                                    daran_prop_t *prop);
 
+#if DARAN_ENABLE_DISCOVERY
 /* Property @p prop's path (without `axisN.`) into out[0..DARAN_PATH_MAX);
  * returns its length, 0 for a row left out of this build. */
 #define DARAN_PATH_MAX 64u
@@ -46,6 +47,7 @@ const char *daran_unit_text(daran_property_t row);
 /* Discovery: every property this build knows, in path order: start with
  * *cursor 0; DARAN_PROP_COUNT after the last. */
 daran_prop_t daran_discovery_next(size_t *cursor);
+#endif /* DARAN_ENABLE_DISCOVERY */
 
 /* A range as the text discovery prints (">=0", "1..63", "{9600,...}",
  * "0|1", "" for none), and whether an integer, or a float's sign, is within

@@ -122,6 +122,16 @@ bool daran_range_holds_f32(daran_range_t range, float value)
 }
 #endif
 
+/* The separator before segment k (k >= 1) of a path whose separator bits
+ * are @p dots. */
+static char separator(unsigned dots, unsigned k)
+{
+    return ((dots >> (k - 1u)) & 1u) != 0u ? '.' : '_';
+}
+
+#if DARAN_ENABLE_DISCOVERY
+/* What only discovery (`h id properties`) reads: the rows in path order,
+ * each path as text, the units. */
 daran_prop_t daran_discovery_next(size_t *cursor)
 {
 #if DARAN_DISCOVERY_IN_ID_ORDER
@@ -137,13 +147,6 @@ daran_prop_t daran_discovery_next(size_t *cursor)
     return *cursor < DARAN_DISCOVERY_COUNT ? (daran_prop_t)discovery_order[(*cursor)++]
                                            : DARAN_PROP_COUNT;
 #endif
-}
-
-/* The separator before segment k (k >= 1) of a path whose separator bits
- * are @p dots. */
-static char separator(unsigned dots, unsigned k)
-{
-    return ((dots >> (k - 1u)) & 1u) != 0u ? '.' : '_';
 }
 
 size_t daran_property_path(daran_prop_t prop, char *out)
@@ -181,6 +184,7 @@ const char *daran_unit_text(daran_property_t row)
 {
     return daran_nth_text(unit_text, DARAN_PROPERTY_UNIT(row));
 }
+#endif /* DARAN_ENABLE_DISCOVERY */
 
 /* Does name[0..len) spell property @p prop's path? Compared segment by
  * segment against the stored text, the path never built. */

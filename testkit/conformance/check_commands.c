@@ -53,9 +53,13 @@ static const conf_family_t fixed_families[] = {
     {"g", NULL, "g {id}", false, false, false, true, "g", "g {id} 1", NULL, NULL, NULL, NULL, NULL},
     {"i", NULL, "i {id}", false, false, false, true, "i", "i {id} 1", NULL, NULL, NULL, NULL, NULL},
     {"e", NULL, "e {id}", false, false, false, true, "e", "e {id} 1", NULL, NULL, NULL, NULL, NULL},
-#if DARAN_ENABLE_HELP
+#if DARAN_ENABLE_DISCOVERY
     {"h", NULL, "h {id}", false, false, true, true, "h", "h {id} properties x y", "h {id} props",
      NULL, NULL, NULL, NULL},
+#elif DARAN_ENABLE_HELP
+    /* without discovery `h` takes nothing after the id */
+    {"h", NULL, "h {id}", false, false, true, true, "h", "h {id} properties", NULL, NULL, NULL,
+     NULL, NULL},
 #endif
 };
 
@@ -659,6 +663,7 @@ static void check_queries(void)
         }
     }
     conf_end();
+#if DARAN_ENABLE_DISCOVERY
     if (conf_begin(REQ_QUERY, "h 1 properties " CONF_NO_SUCH_PATH)) {
         send_own("h {id} properties " CONF_NO_SUCH_PATH);
         (void)conf_expect_no_effect();
@@ -669,6 +674,7 @@ static void check_queries(void)
         }
     }
     conf_end();
+#endif
 #else
     conf_skip(REQ_QUERY, "h", "DARAN_ENABLE_HELP is 0");
 #endif

@@ -158,7 +158,7 @@ static void check_read(daran_prop_t prop)
 
 /* ---- C3: discovery ---- */
 
-#if DARAN_ENABLE_HELP
+#if DARAN_ENABLE_DISCOVERY
 static daran_prop_t prop_of_path(const char *path, size_t len)
 {
     for (int i = 0; i < (int)DARAN_PROP_COUNT; i++) {
@@ -510,10 +510,10 @@ void conf_check_properties(void)
     conf_note("properties: %lu in this build (the vendor's and the port's own rows), %lu left "
               "out of it (DARAN_OMIT_PROPERTIES, DARAN_PROPERTY_OMIT)",
               (unsigned long)in_build, (unsigned long)left_out);
-#if DARAN_ENABLE_HELP
+#if DARAN_ENABLE_DISCOVERY
     check_discovery();
 #else
-    conf_skip(REQ_DISCOVERY, "h 1 properties", "DARAN_ENABLE_HELP is 0");
+    conf_skip(REQ_DISCOVERY, "h 1 properties", "DARAN_ENABLE_DISCOVERY is 0");
 #endif
     check_served();
     for (int i = 0; i < (int)DARAN_PROP_COUNT; i++) {
