@@ -15,7 +15,13 @@ cc=arm-none-eabi-gcc
 cpu="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
 cflags="$cpu -Os -std=c99 -ffunction-sections -fdata-sections -fno-math-errno -fno-tree-loop-distribute-patterns -Iinclude -Isrc -I$out/generated -Ibench/baseline"
 ldflags="$cpu --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections"
-core_sources=$(sed -n 's/^  \([a-z_0-9]*\.c\)$/src\/\1/p' src/CMakeLists.txt)
+# The core's sources: the DARAN_CORE_SOURCES list of cmake/DaranAddLibrary.cmake.
+core_sources=$(sed -n '/PROPERTY DARAN_CORE_SOURCES/,/)/p' cmake/DaranAddLibrary.cmake |
+  grep -o '[a-z_0-9]*\.c' | sed 's|^|src/|')
+if [ -z "$core_sources" ]; then
+  echo "m4_size.sh: no core sources found in cmake/DaranAddLibrary.cmake" >&2
+  exit 1
+fi
 
 # Objects first, one folder per part, so the link maps say where each byte came from.
 compile() { # part parser-number sources...
