@@ -103,7 +103,6 @@ typedef struct daran_drive {
     uint16_t star_at;        /* index of the line's first '*', DARAN_LINE_MAX when none yet */
     uint16_t reply_len;
     uint8_t line_flags;      /* too long, invalid byte, inside a field */
-    uint8_t line_xor;        /* XOR of the line's bytes before its first '*' */
     uint8_t reply_wants_checksum;  /* the current request carried a checksum field */
     uint8_t has_preset;
     uint8_t port_command_count;

@@ -218,7 +218,7 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
 static daran_result_t run_framed_line(daran_drive_t *drive)
 {
     uint8_t flags = drive->line_flags;
-    daran_line_t line = {drive->line, drive->line_len, drive->star_at, drive->line_xor};
+    daran_line_t line = {drive->line, drive->line_len, drive->star_at};
     if (line.star_at == DARAN_LINE_MAX) {
         line.star_at = line.len;
     }

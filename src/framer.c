@@ -1,15 +1,12 @@
 /* The framer: bytes -> one line at a time in the instance's line buffer, in
- * one pass over each byte. While a byte is in a register it is copied,
- * classified, XORed into the checksum (up to the first '*') and, at the
- * edges of a field, the field's offset and length are noted, so no later
- * stage walks the line again. Overlong lines, lost bytes and invalid bytes
- * are decided here, once. The framer hands back how far it got and whether
- * a line ended; drive.c runs the line.
- *
- * (A word-at-a-time version, classifying 8 bytes with bit masks, saved only
- * about 10% on recorded sessions, whose fields are short, for 470 bytes of
- * flash; an inner loop per field saved 110 instructions a line for 72
- * bytes. Flash decided both: docs/performance.md.) */
+ * one pass over each byte. A field byte is copied and classified, nothing
+ * more; every other byte (blank, '*', line end, invalid) ends the field
+ * before it, whose offset and length are noted then, so no later stage
+ * walks the line to find its fields. Overlong lines, lost bytes and invalid
+ * bytes are decided here, once. The checksum's XOR is not taken here: only
+ * a line with a '*' needs it, and checksum.c takes it four bytes a step.
+ * The framer hands back how far it got and whether a line ended; drive.c
+ * runs the line (docs/performance.md has the designs measured). */
 #include "framer.h"
 
 #include "compiler.h"
@@ -21,7 +18,6 @@ void daran_framer_reset(daran_drive_t *drive)
     drive->line_len = 0;
     drive->line_flags = 0;
     drive->star_at = DARAN_LINE_MAX;
-    drive->line_xor = 0;
     drive->fields.count = 0;
     drive->fields.start[0] = 0; /* where the first field would start */
 }
@@ -58,13 +54,11 @@ static DARAN_ALWAYS_INLINE unsigned end_field(daran_fields_t *fields, unsigned c
     return count;
 }
 
-/* A byte that is no field byte, just stored at `stored` (`sum`: the XOR of
- * the line up to and including it): it ends the field before it, and is
- * noted if it is the first '*' or an invalid byte. Returns true for a line
- * end, which is not part of the line. Out of the byte loop's way, so that
- * loop keeps its values in registers. */
-static DARAN_NOINLINE bool other_byte(daran_drive_t *drive, const char *stored, unsigned sum,
-                                      bool from_ring)
+/* A byte that is no field byte, just stored at `stored`: it ends the field
+ * before it, and is noted if it is the first '*' or an invalid byte.
+ * Returns true for a line end, which is not part of the line. Out of the
+ * byte loop's way, so that loop keeps its values in registers. */
+static DARAN_NOINLINE bool other_byte(daran_drive_t *drive, const char *stored, bool from_ring)
 {
     uint8_t byte = (uint8_t)*stored;
     size_t at = (size_t)(stored - drive->line);
@@ -72,7 +66,6 @@ static DARAN_NOINLINE bool other_byte(daran_drive_t *drive, const char *stored, 
         drive->fields.count = (uint8_t)end_field(&drive->fields, drive->fields.count, at);
         if (byte == '*') {
             drive->star_at = (uint16_t)at;
-            drive->line_xor = (uint8_t)(sum ^ (unsigned)'*'); /* the XOR before it */
         }
     }
     if (is_line_end(byte, from_ring)) {
@@ -92,7 +85,6 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
 {
     char *line = drive->line;
     char *out = line + drive->line_len;
-    unsigned sum = drive->line_xor; /* a full register: no narrowing per byte */
     if ((drive->line_flags & DARAN_LINE_IN_FIELD) != 0u) {
         drive->fields.count--; /* the field the last bytes ended in goes on */
     }
@@ -104,19 +96,18 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
     const uint8_t *end = bytes + (n < room ? n : room);
     bool line_ended = false;
     for (;;) {
-        /* A field byte is copied and XORed, nothing more. Any other byte is
-         * stored and XORed too (the sum before the '*' is kept when the '*'
-         * comes), then other_byte() decides. */
+        /* A field byte is copied, nothing more (the checksum stage XORs the
+         * line, and only a line that has a '*'). Any other byte is stored
+         * too, then other_byte() decides. */
         while (in != end) {
             uint8_t byte = *in++;
             *out = (char)byte;
-            sum ^= byte;
             if (!is_field_byte(byte)) {
                 if (byte == ' ' && drive->star_at == DARAN_LINE_MAX) {
                     /* a blank between fields, the most common of the others */
                     drive->fields.count = (uint8_t)end_field(&drive->fields, drive->fields.count,
                                                              (size_t)(out - drive->line));
-                } else if (other_byte(drive, out, sum, from_ring)) {
+                } else if (other_byte(drive, out, from_ring)) {
                     line_ended = true;
                     goto done;
                 }
@@ -155,7 +146,6 @@ done:;
     drive->line_len = (daran_line_offset_t)len;
     drive->line_flags &= (uint8_t)~DARAN_LINE_IN_FIELD;
     if (drive->star_at == DARAN_LINE_MAX) {
-        drive->line_xor = (uint8_t)sum;
         /* The bytes end inside a field (a text without its line end, or the
          * ring's run): count it, so the line is whole if nothing follows. */
         daran_fields_t *fields = &drive->fields;

@@ -29,7 +29,6 @@ typedef struct daran_line {
     const char *text;
     size_t len;
     size_t star_at; /* index of the first '*'; len when there is none */
-    uint8_t xor_before_star;
 } daran_line_t;
 
 /* daran_drive_t.line_flags */

@@ -417,9 +417,14 @@ static DARAN_NOINLINE int short_decimal(const char *t, size_t len, float *out)
     if (*p == '-' || *p == '+') {
         p++;
     }
+    /* A significand past 2^24 leaves at once: a long number is the full
+     * road's, and w never wraps (2^24 * 10 + 9 < 2^32). */
     const char *digits = p;
     while (p != end && (d = (uint32_t)(unsigned char)*p - (uint32_t)'0') <= 9u) {
         w = w * 10u + d;
+        if (w > (UINT32_C(1) << 24)) {
+            return 0;
+        }
         p++;
     }
     size_t whole = (size_t)(p - digits);
@@ -428,12 +433,15 @@ static DARAN_NOINLINE int short_decimal(const char *t, size_t len, float *out)
         const char *first = ++p;
         while (p != end && (d = (uint32_t)(unsigned char)*p - (uint32_t)'0') <= 9u) {
             w = w * 10u + d;
+            if (w > (UINT32_C(1) << 24)) {
+                return 0;
+            }
             p++;
         }
         fraction = (size_t)(p - first);
     }
-    /* w wraps past 9 digits: such a number is the full road's */
-    if (p != end || whole + fraction - 1u > 8u || w > (UINT32_C(1) << 24)) {
+    /* a digit, at most 10 of them after the point (10^k exact), then the end */
+    if (p != end || whole + fraction == 0u || fraction > 10u) {
         return 0;
     }
     float f = (float)w;
