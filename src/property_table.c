@@ -18,17 +18,17 @@
 #include "property_features.h"
 
 /* The packed tables' entries (see the generated header for the layout). */
-static DARAN_ALWAYS_INLINE unsigned word_end(unsigned n)
+static unsigned word_end(unsigned n)
 {
     return word_end_low[n] | (((unsigned)word_end_high[n >> 2] >> ((n & 3u) * 2u)) & 3u) << 8;
 }
 
-static DARAN_ALWAYS_INLINE unsigned word_start(unsigned number)
+static unsigned word_start(unsigned number)
 {
     return number > 1u ? word_end(number - 2u) : 0u;
 }
 
-static DARAN_ALWAYS_INLINE unsigned path_start(unsigned prop)
+static unsigned path_start(unsigned prop)
 {
     return path_start_low[prop] | (unsigned)(path_info[prop] >> 6) << 8;
 }
