@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Generate the core's property index from DARAN_PROPERTY_LIST.
 
-Run by the build (src/CMakeLists.txt), never committed: the list in
+Run by the build (daran_ascii_add_library(), cmake/DaranAddLibrary.cmake), never committed: the list in
 include/daran_properties.h is the one source of truth, and a build may leave
 rows out (--omit) without editing it.
 
