@@ -6,17 +6,9 @@
 set -eu
 cd "$(dirname "$0")/../.."
 
-missing=""
-command -v arm-none-eabi-gcc >/dev/null 2>&1 || missing="$missing gcc-arm-none-eabi"
-[ -e /usr/lib/arm-none-eabi/newlib/thumb/v7e-m+fp/hard/libc_nano.a ] ||
-    missing="$missing libnewlib-arm-none-eabi"
-command -v qemu-system-arm >/dev/null 2>&1 || missing="$missing qemu-system-arm"
-if [ -n "$missing" ]; then
-    echo "30-cortex-m4: installing$missing"
-    apt-get update -qq
-    # shellcheck disable=SC2086
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing
-fi
+. tools/ci-packages.sh
+# shellcheck disable=SC2046
+install_packages 30-cortex-m4 $(arm_packages_missing)
 
 # Unity for the target suites: the same copy outside the tree as the host's
 # (a no-op when it is there already).

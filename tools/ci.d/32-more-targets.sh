@@ -15,21 +15,15 @@ cd "$(dirname "$0")/../.."
 
 presets=${MORE_TARGETS:-"cortex-m0 cortex-m3 cortex-m7 cortex-m33 big-endian"}
 
-missing=""
-command -v arm-none-eabi-gcc >/dev/null 2>&1 || missing="$missing gcc-arm-none-eabi"
-[ -e /usr/lib/arm-none-eabi/newlib/thumb/v6-m/nofp/libc.a ] ||
-    missing="$missing libnewlib-arm-none-eabi"
-command -v qemu-system-arm >/dev/null 2>&1 || missing="$missing qemu-system-arm"
+. tools/ci-packages.sh
+missing=$(arm_packages_missing)
+[ -e /usr/lib/arm-none-eabi/newlib/thumb/v6-m/nofp/libc.a ] || missing="$missing libnewlib-arm-none-eabi"
 command -v cc >/dev/null 2>&1 || missing="$missing gcc" # the counting plugin
 command -v powerpc-linux-gnu-gcc >/dev/null 2>&1 || missing="$missing gcc-powerpc-linux-gnu"
 [ -e /usr/powerpc-linux-gnu/lib/libm.so.6 ] || missing="$missing libc6-dev-powerpc-cross"
 command -v qemu-ppc >/dev/null 2>&1 || missing="$missing qemu-user"
-if [ -n "$missing" ]; then
-    echo "32-more-targets: installing$missing"
-    apt-get update -qq
-    # shellcheck disable=SC2086
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing
-fi
+# shellcheck disable=SC2086
+install_packages 32-more-targets $(printf '%s\n' $missing | sort -u)
 
 tools/fetch-unity
 
