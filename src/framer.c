@@ -83,6 +83,10 @@ static DARAN_NOINLINE bool other_byte(daran_drive_t *drive, const char *stored, 
 size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, bool from_ring,
                          bool *ended)
 {
+    *ended = false;
+    if (n == 0u) {
+        return 0; /* nothing to frame (and bytes may be NULL: no pointer is made from it) */
+    }
     char *line = drive->line;
     char *out = line + drive->line_len;
     if ((drive->line_flags & DARAN_LINE_IN_FIELD) != 0u) {

@@ -426,6 +426,8 @@ static void test_process_line_runs_a_framed_line(void)
     TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "t 1 10", 6));
     TEST_ASSERT_EQUAL_INT64(1, mock_count(m, MOCK_CALL_MOVE));
     TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "", 0));
+    /* an empty text may come as NULL: nothing is read or offset from it */
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, NULL, 0));
     TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 2", 3));
     ASSERT_REPLY(m, "");
     /* a checksum field works the same on this path */
