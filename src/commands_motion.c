@@ -99,6 +99,18 @@ static daran_result_t parse_motion_value(const daran_field_t *field, uint8_t che
     return check_value(check, *out);
 }
 
+daran_result_t daran_shape_check(daran_shape_t shape_id, const float *values, uint8_t count)
+{
+    const motion_shape_t *shape = &shapes[shape_id];
+    for (uint8_t i = 0; i < count; i++) {
+        daran_result_t result = check_value(CHECK_OF(shape->value[i]), values[i]);
+        if (result != DARAN_OK) {
+            return result;
+        }
+    }
+    return DARAN_OK;
+}
+
 daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uint8_t count,
                                 daran_move_t *move)
 {
@@ -110,12 +122,6 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
     move->kind = (daran_move_kind_t)shape->kind;
     move->given = 0;
     for (uint8_t i = 0; i < count; i++) {
-        /* a line's values were checked as they were parsed; a preset's are
-         * checked here, in the same order (D17) */
-        daran_result_t result = check_value(CHECK_OF(shape->value[i]), values[i]);
-        if (result != DARAN_OK) {
-            return result;
-        }
         slot[SLOT_OF(shape->value[i])] = values[i];
         if (SLOT_OF(shape->value[i]) == SLOT_VEL && shape->kind == DARAN_MOVE_TRAPEZOID) {
             move->given |= DARAN_GIVEN_VEL;

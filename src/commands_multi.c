@@ -107,7 +107,11 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
     if (timed && (!(values[1] >= 0.0f) || !(values[2] >= 0.0f))) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
-    daran_result_t result = daran_shape_move(shape, values, timed ? 1u : 3u, move);
+    uint8_t count = timed ? 1u : 3u;
+    daran_result_t result = daran_shape_check(shape, values, count);
+    if (result == DARAN_OK) {
+        result = daran_shape_move(shape, values, count, move);
+    }
     if (result != DARAN_OK || shape == DARAN_SHAPE_VELOCITY || shape == DARAN_SHAPE_TORQUE) {
         return result;
     }

@@ -34,9 +34,12 @@ typedef enum daran_shape {
     DARAN_SHAPE_IMPEDANCE,   /* d */
     DARAN_SHAPE_COUNT
 } daran_shape_t;
-/* Check @p count values (the line's, after the id, or a preset's) against a
- * shape, in order (the first failing value answers, D11), and build the
- * move; the ramp rate, which depends on the mode, is checked last. */
+/* Check @p count values against a shape, in order: the first failing value
+ * answers (D11). A line's values are checked as they are parsed; a preset's
+ * with this, in the same order (D17). */
+daran_result_t daran_shape_check(daran_shape_t shape, const float *values, uint8_t count);
+/* Build the move of @p count checked values; the ramp rate, which depends on
+ * the mode, is checked here, last. */
 daran_result_t daran_shape_move(daran_shape_t shape, const float *values, uint8_t count,
                                 daran_move_t *move);
 
