@@ -132,8 +132,14 @@ def check_range(ident, text, typ):
 
 
 def fnv(seed, scope, data):
+    """FNV-1a over the path four bytes a step (each four as a little-endian
+    word, whatever the target's byte order), then the bytes left one at a
+    time: daran_find_property() in C takes the same steps."""
     h = (seed + scope) & MASK32
-    for byte in data:
+    whole = len(data) - len(data) % 4
+    for k in range(0, whole, 4):
+        h = ((h ^ int.from_bytes(data[k:k + 4], "little")) * FNV_PRIME) & MASK32
+    for byte in data[whole:]:
         h = ((h ^ byte) * FNV_PRIME) & MASK32
     return h
 
