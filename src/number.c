@@ -407,8 +407,10 @@ static const float short_scale[11] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
  * scan's bookkeeping. 0: not such a number, the full road decides. */
 static DARAN_NOINLINE int short_decimal(const char *t, size_t len, float *out)
 {
-    if (!DARAN_NUM_FAST_PATH || len == 0u) {
-        return 0; /* empty: text may be NULL, and no pointer is made from it */
+    /* a sign, 9 digits and a point at most: a longer text is the full
+     * road's without a look (and an empty one may be NULL) */
+    if (!DARAN_NUM_FAST_PATH || len == 0u || len > 11u) {
+        return 0;
     }
     const char *p = t;
     const char *end = t + len;
