@@ -83,8 +83,8 @@ static DARAN_NOINLINE bool other_byte(daran_drive_t *drive, const char *stored, 
 size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, bool from_ring,
                          bool *ended)
 {
-    *ended = false;
     if (n == 0u) {
+        *ended = false;
         return 0; /* nothing to frame (and bytes may be NULL: no pointer is made from it) */
     }
     char *line = drive->line;
