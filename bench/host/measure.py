@@ -184,12 +184,12 @@ def verdicts(families, sessions, lookups):
                                                                        len(rows), shown))
     over = [r for r in lookups["ours"] if r > TARGET_LOOKUP]
     md.append("- property lookup <= %d instructions on every row (%d rows): %s; min %s, mean %s, "
-              "max %s; %d rows above %d." % (
+              "max %s; rows above %d: %d." % (
                   TARGET_LOOKUP, len(lookups["ours"]),
                   "**met**" if not over else "**missed** (max %s, %.1fx the target)" % (
                       fmt(max(lookups["ours"])), max(lookups["ours"]) / TARGET_LOOKUP),
                   fmt(min(lookups["ours"])), fmt(sum(lookups["ours"]) / len(lookups["ours"])),
-                  fmt(max(lookups["ours"])), len(over), TARGET_LOOKUP))
+                  fmt(max(lookups["ours"])), TARGET_LOOKUP, len(over)))
     md.append("- for scale, the sscanf/printf yardstick on reference.txt: %s per line, %.1fx the "
               "core pre-framed, %.1fx the byte path." % (fmt(ref["base"]), ref["base"] / ref["ours"],
                                                         ref["base"] / ref["poll"]))
