@@ -1,10 +1,10 @@
 /* Queries f g i e (and `r`'s reply): each answers with values read from the
  * HAL. `h` lives with the command table, whose text it prints. */
+#include "compiler.h"
 #include "handlers.h"
 #include "hal.h"
 #include "property.h"
 #include "reply.h"
-#include "text.h"
 
 daran_result_t daran_append_properties(daran_drive_t *drive, const daran_prop_t *props,
                                        size_t count)
@@ -92,11 +92,20 @@ static const daran_prop_t error_registers[] = {
 static const uint8_t summary_bit[ERROR_REGISTER_COUNT - 1u] = {6, 8, 9, 18, 18, 31};
 
 /* Each line's name and separator, in register order: the register's path
- * without ".error", `axis` for axis0.error itself. Stored as text, so `e`
- * copies seven names instead of rebuilding seven paths from the table;
- * test_e_names_each_register_by_its_path holds them to the table's paths. */
-static const char register_names[] = DARAN_AXIS_WORD ": \0motor: \0encoder: \0controller: \0"
-                                     "fet_thermistor: \0motor_thermistor: \0can: ";
+ * without ".error", `axis` for axis0.error itself. Stored as text with its
+ * length, so `e` copies seven names instead of rebuilding seven paths from
+ * the table; test_e_names_each_register_by_its_path holds them to the
+ * table's paths. */
+#define REGISTER_LINES(X)                                                                       \
+    X(DARAN_AXIS_WORD ": ") X("motor: ") X("encoder: ") X("controller: ") X("fet_thermistor: ") \
+    X("motor_thermistor: ") X("can: ")
+#define NAME_TEXT(name) name "\0"
+static const char register_names[] = REGISTER_LINES(NAME_TEXT);
+#undef NAME_TEXT
+#define NAME_LEN(name) (uint8_t)(sizeof name - 1u),
+static const uint8_t register_name_len[] = {REGISTER_LINES(NAME_LEN)};
+#undef NAME_LEN
+DARAN_STATIC_ASSERT(sizeof register_name_len == ERROR_REGISTER_COUNT, a_name_for_each_register);
 
 daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *request)
 {
@@ -120,12 +129,11 @@ daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *req
     }
     const char *name = register_names;
     for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
-        size_t len = daran_text_len(name);
         daran_reply_begin(drive);
-        daran_reply_text(drive, name, len);
+        daran_reply_text(drive, name, register_name_len[i]);
         daran_reply_u64(drive, values[i]);
         daran_reply_end(drive);
-        name += len + 1u;
+        name += register_name_len[i] + 1u;
     }
     return DARAN_OK;
 }

@@ -612,6 +612,10 @@ static size_t float_text(float value, char *buf)
         *p++ = '-'; /* not for a NaN */
     }
     bits &= 0x7FFFFFFFu;
+    if (bits == 0u) {
+        *p++ = '0'; /* a drive at rest reports zeros: no digit pass for them */
+        return (size_t)(p - buf);
+    }
     if (bits >= DARAN_F32_INF) {
         dig = &"infnan"[bits > DARAN_F32_INF ? 3 : 0]; /* one literal for both words */
         nd = 3;
@@ -676,6 +680,10 @@ size_t daran_format_float(float value, char *buf, size_t size)
 
 size_t daran_format_uint(uint64_t value, char *buf, size_t size)
 {
+    if (value < 10u && size != 0u) {
+        *buf = (char)('0' + (unsigned)value); /* the flags and counters replies carry most */
+        return 1;
+    }
     char d[DARAN_U64_TEXT_MAX];
     const char *p = put_digits(d + sizeof d, (uint32_t)(value >> 32), (uint32_t)value);
     return put_fit((size_t)(d + sizeof d - p), p, buf, size);
