@@ -400,6 +400,22 @@ static int decimal_to_bits(uint64_t w, int32_t q, int truncated, uint32_t *bits)
 static const float short_scale[11] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
                                       1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
 
+/* The digits from p on, gathered into *w: where they end, or NULL once the
+ * significand passes 2^24 (a long number is the full road's, and *w never
+ * wraps: 2^24 * 10 + 9 < 2^32). */
+static DARAN_ALWAYS_INLINE const char *short_digits(const char *p, const char *end, uint32_t *w)
+{
+    uint32_t d;
+    while (p != end && (d = (uint32_t)(unsigned char)*p - (uint32_t)'0') <= 9u) {
+        *w = *w * 10u + d;
+        if (*w > (UINT32_C(1) << 24)) {
+            return NULL;
+        }
+        p++;
+    }
+    return p;
+}
+
 /* The number hosts send most: [+-]?digits[.digits] (or .digits) with at
  * most 9 digits, a significand of at most 2^24 and at most 10 digits after
  * the point. Both operands of w / 10^k are then exact floats and one IEEE
@@ -415,30 +431,19 @@ static DARAN_NOINLINE int short_decimal(const char *t, size_t len, float *out)
     const char *p = t;
     const char *end = t + len;
     uint32_t w = 0;
-    uint32_t d;
     if (*p == '-' || *p == '+') {
         p++;
     }
-    /* A significand past 2^24 leaves at once: a long number is the full
-     * road's, and w never wraps (2^24 * 10 + 9 < 2^32). */
     const char *digits = p;
-    while (p != end && (d = (uint32_t)(unsigned char)*p - (uint32_t)'0') <= 9u) {
-        w = w * 10u + d;
-        if (w > (UINT32_C(1) << 24)) {
-            return 0;
-        }
-        p++;
+    if ((p = short_digits(p, end, &w)) == NULL) {
+        return 0;
     }
     size_t whole = (size_t)(p - digits);
     size_t fraction = 0;
     if (p != end && *p == '.') {
         const char *first = ++p;
-        while (p != end && (d = (uint32_t)(unsigned char)*p - (uint32_t)'0') <= 9u) {
-            w = w * 10u + d;
-            if (w > (UINT32_C(1) << 24)) {
-                return 0;
-            }
-            p++;
+        if ((p = short_digits(p, end, &w)) == NULL) {
+            return 0;
         }
         fraction = (size_t)(p - first);
     }
@@ -598,9 +603,10 @@ static char *put_digits(char *p, uint32_t hi, uint32_t lo)
 }
 
 /* The text of daran_format_float() into buf[0..DARAN_F32_TEXT_MAX); returns
- * its length. Zero and the words "inf" and "nan" take the same digit pass as
- * every other value: their digits, no point, no exponent. Writes through a
- * moving pointer (indexing a stack buffer costs more code on Cortex-M). */
+ * its length. Zero is the one digit "0"; the words "inf" and "nan" take the
+ * same digit pass as every other value: their letters, no point, no
+ * exponent. Writes through a moving pointer (indexing a stack buffer costs
+ * more code on Cortex-M). */
 static size_t float_text(float value, char *buf)
 {
     uint32_t bits, s;
@@ -621,14 +627,11 @@ static size_t float_text(float value, char *buf)
         nd = 3;
         k = 2; /* "d.dd x 10^2": positional, three digits, no point */
     } else {
-        s = 0; /* zero prints as the one digit "0" */
         k = 0;
-        if (bits) {
-            s = shortest_digits(bits >> 23, bits & 0x7FFFFFu, &k);
-            while (s % 10u == 0) {
-                s /= 10u;
-                k++;
-            }
+        s = shortest_digits(bits >> 23, bits & 0x7FFFFFu, &k);
+        while (s % 10u == 0) {
+            s /= 10u;
+            k++;
         }
         dig = put_digits(d + sizeof d, 0, s);
         nd = (int32_t)(d + sizeof d - dig);
