@@ -178,9 +178,11 @@ const daran_command_t *daran_find_command(const daran_field_t *word)
     if (row == 0u) {
         return NULL;
     }
+    /* the row's letters against the ones already lowered: a field holds
+     * neither NUL nor blank, so c1 is 0 for a one-letter word alone */
     const daran_command_t *command = &commands[row - 1u];
-    return daran_word_is(word->text, word->len, command->word, sizeof command->word) ? command
-                                                                                     : NULL;
+    return (unsigned char)command->word[0] == c0 && (unsigned char)command->word[1] == c1 ? command
+                                                                                        : NULL;
 }
 
 daran_result_t daran_run_command(daran_drive_t *drive, const daran_request_t *request)
