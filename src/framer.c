@@ -6,12 +6,19 @@
  * bytes are decided here, once. The checksum's XOR is not taken here: only
  * a line with a '*' needs it, and checksum.c takes it four bytes a step.
  * The framer hands back how far it got and whether a line ended; drive.c
- * runs the line (docs/performance.md has the designs measured). */
+ * runs the line (docs/performance.md has the designs measured).
+ *
+ * The pass keeps its state (field count, where the field began, the '*',
+ * the flags) in locals and writes it back once: every byte stored into the
+ * line is a char store, which the compiler must assume can change any
+ * member of the instance, so state kept there would be reloaded per byte. */
 #include "framer.h"
 
 #include "compiler.h"
 #include "line.h"
 #include "rx_ring.h"
+
+#include <string.h>
 
 void daran_framer_reset(daran_drive_t *drive)
 {
@@ -22,62 +29,44 @@ void daran_framer_reset(daran_drive_t *drive)
     drive->fields.start[0] = 0; /* where the first field would start */
 }
 
-/* A byte that can be part of a field: printable, not blank, not '*'. */
-static bool is_field_byte(uint8_t byte)
+/* The field bytes a line is made of, almost all of them: '+' (0x2B) to '~'.
+ * One range test, which leaves out '*' (0x2A) without a second one; the
+ * rarer field bytes '!' to ')' take the other road. */
+static bool is_common_field_byte(uint8_t byte)
 {
-    return (uint8_t)(byte - 0x21u) < 0x5Eu && byte != '*';
+    return (uint8_t)(byte - (uint8_t)'+') <= (uint8_t)('~' - '+');
 }
+
+#if DARAN_CHEAP_UNALIGNED_WORDS
+/* The bytes of a word that are not common field bytes, as the top bit of
+ * each: below '+' (the borrow of the subtraction; ~word keeps bytes of 0x80
+ * and up out of that test) or at 0x7F and up (the carry of the addition, or
+ * the byte's own top bit). A borrow or carry can flag a byte only beyond one
+ * that is flagged rightly, so the first flagged byte in memory order is
+ * always right on a little-endian target; on a big-endian one it may be a
+ * common byte before it, which the caller decides byte by byte anyway. */
+static uint32_t other_bytes_of(uint32_t word)
+{
+    uint32_t below = (word - 0x2B2B2B2Bu) & ~word;
+    uint32_t above = (word + 0x01010101u) | word;
+    return (below | above) & 0x80808080u;
+}
+
+/* How many bytes come before the first flagged one, in memory order. */
+static size_t first_flagged_byte(uint32_t flagged)
+{
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    return (size_t)__builtin_clz(flagged) / 8u;
+#else
+    return (size_t)__builtin_ctz(flagged) / 8u;
+#endif
+}
+#endif
 
 /* Is this byte a line end: '\n', or from the ring the mark of a damaged one? */
 static bool is_line_end(uint8_t byte, bool from_ring)
 {
     return byte == '\n' || (from_ring && byte == DARAN_RX_DAMAGED_END);
-}
-
-/* The byte at offset `at` is no field byte and comes before any '*': it ends
- * the field that started at fields->start[count] if that is not empty, and
- * the next one may start after it. Past DARAN_FIELDS_MAX fields nothing is
- * recorded: the count stays there, and the line has too many fields whatever
- * its command. */
-static DARAN_ALWAYS_INLINE unsigned end_field(daran_fields_t *fields, unsigned count, size_t at)
-{
-    if (count < DARAN_FIELDS_MAX) {
-        size_t start = fields->start[count];
-        if (at > start) {
-            fields->len[count] = (daran_line_offset_t)(at - start);
-            count++;
-        }
-        if (count < DARAN_FIELDS_MAX) {
-            fields->start[count] = (daran_line_offset_t)(at + 1u);
-        }
-    }
-    return count;
-}
-
-/* A byte that is no field byte, just stored at `stored`: it ends the field
- * before it, and is noted if it is the first '*' or an invalid byte.
- * Returns true for a line end, which is not part of the line. Out of the
- * byte loop's way, so that loop keeps its values in registers. */
-static DARAN_NOINLINE bool other_byte(daran_drive_t *drive, const char *stored, bool from_ring)
-{
-    uint8_t byte = (uint8_t)*stored;
-    size_t at = (size_t)(stored - drive->line);
-    if (drive->star_at == DARAN_LINE_MAX) {
-        drive->fields.count = (uint8_t)end_field(&drive->fields, drive->fields.count, at);
-        if (byte == '*') {
-            drive->star_at = (uint16_t)at;
-        }
-    }
-    if (is_line_end(byte, from_ring)) {
-        if (byte != '\n') {
-            drive->line_flags |= DARAN_LINE_DAMAGED;
-        }
-        return true;
-    }
-    if (!daran_byte_allowed(byte)) {
-        drive->line_flags |= DARAN_LINE_INVALID_BYTE;
-    }
-    return false;
 }
 
 size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, bool from_ring,
@@ -88,39 +77,89 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
         return 0; /* nothing to frame (and bytes may be NULL: no pointer is made from it) */
     }
     char *line = drive->line;
+    daran_fields_t *fields = &drive->fields;
     char *out = line + drive->line_len;
+    unsigned count = fields->count;
+    size_t star_at = drive->star_at;
     if ((drive->line_flags & DARAN_LINE_IN_FIELD) != 0u) {
-        drive->fields.count--; /* the field the last bytes ended in goes on */
+        count--; /* the field the last bytes ended in goes on */
     }
+    /* Where the field being read began (or the next one will). */
+    size_t start = count < DARAN_FIELDS_MAX ? fields->start[count] : 0u;
     const uint8_t *in = bytes;
-    const uint8_t *all = bytes + n;
     /* Every byte taken before the line end is stored: the line has room for
      * the bytes up to `end`, so the loop checks no length of its own. */
-    size_t room = (size_t)(line + DARAN_LINE_MAX - out);
+    size_t room = DARAN_LINE_MAX - drive->line_len;
     const uint8_t *end = bytes + (n < room ? n : room);
     bool line_ended = false;
     for (;;) {
-        /* A field byte is copied, nothing more (the checksum stage XORs the
-         * line, and only a line that has a '*'). Any other byte is stored
-         * too, then other_byte() decides. */
-        while (in != end) {
-            uint8_t byte = *in++;
-            *out = (char)byte;
-            if (!is_field_byte(byte)) {
-                if (byte == ' ' && drive->star_at == DARAN_LINE_MAX) {
-                    /* a blank between fields, the most common of the others */
-                    drive->fields.count = (uint8_t)end_field(&drive->fields, drive->fields.count,
-                                                             (size_t)(out - drive->line));
-                } else if (other_byte(drive, out, from_ring)) {
-                    line_ended = true;
-                    goto done;
+        /* A run of common field bytes is copied and passed over, a word at
+         * a time where the target reads unaligned words cheaply; the byte
+         * that stops the run is stored with it and decided below. */
+        uint8_t byte;
+#if DARAN_CHEAP_UNALIGNED_WORDS
+        while ((size_t)(end - in) >= 4u) {
+            uint32_t word;
+            memcpy(&word, in, sizeof word);
+            memcpy(out, &word, sizeof word);
+            uint32_t stops = other_bytes_of(word);
+            if (stops != 0u) {
+                size_t run = first_flagged_byte(stops);
+                in += run;
+                out += run;
+                byte = *in++;
+                goto decide;
+            }
+            in += 4;
+            out += 4;
+        }
+#endif
+        do {
+            if (in == end) {
+                goto out_of_bytes;
+            }
+            byte = *in++;
+            *out++ = (char)byte;
+        } while (is_common_field_byte(byte));
+        out--;
+#if DARAN_CHEAP_UNALIGNED_WORDS
+    decide:
+#endif
+        if (byte <= ' ' || byte == '*' || byte >= 0x7Fu) {
+            if (star_at == DARAN_LINE_MAX) {
+                size_t at = (size_t)(out - line);
+                /* it ends the field before it, if that is not empty; past
+                 * DARAN_FIELDS_MAX fields nothing more is recorded, and the
+                 * line has too many fields whatever its command */
+                if (at > start && count < DARAN_FIELDS_MAX) {
+                    fields->start[count] = (daran_line_offset_t)start;
+                    fields->len[count] = (daran_line_offset_t)(at - start);
+                    count++;
+                }
+                start = at + 1u;
+                if (byte == '*') {
+                    star_at = at;
                 }
             }
-            out++;
+            if (byte != ' ' && byte != '*') {
+                if (is_line_end(byte, from_ring)) {
+                    if (byte != '\n') {
+                        drive->line_flags |= DARAN_LINE_DAMAGED;
+                    }
+                    line_ended = true;
+                    break;
+                }
+                if (!daran_byte_allowed(byte)) {
+                    drive->line_flags |= DARAN_LINE_INVALID_BYTE;
+                }
+            }
         }
-        if (in == all) {
-            break; /* every byte taken; a field may go on in the next ones */
-        }
+        out++;
+    }
+out_of_bytes:;
+    size_t at = (size_t)(out - line);
+    const uint8_t *all = bytes + n;
+    if (!line_ended && in != all) {
         /* A full line takes only its line end; anything else makes it too
          * long: discard up to the line end, which is still honoured. */
         const uint8_t *stop = in;
@@ -131,34 +170,35 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
             drive->line_flags |= DARAN_LINE_TOO_LONG;
             in = stop;
         }
-        if (in == all) {
-            break;
-        }
-        /* the line end: it ends the last field, and is never stored */
-        if (drive->star_at == DARAN_LINE_MAX) {
-            drive->fields.count =
-                (uint8_t)end_field(&drive->fields, drive->fields.count, (size_t)(out - line));
-        }
-        if (*in++ != '\n') {
-            drive->line_flags |= DARAN_LINE_DAMAGED;
-        }
-        line_ended = true;
-        break;
-    }
-done:;
-    size_t len = (size_t)(out - line);
-    drive->line_len = (daran_line_offset_t)len;
-    drive->line_flags &= (uint8_t)~DARAN_LINE_IN_FIELD;
-    if (drive->star_at == DARAN_LINE_MAX) {
-        /* The bytes end inside a field (a text without its line end, or the
-         * ring's run): count it, so the line is whole if nothing follows. */
-        daran_fields_t *fields = &drive->fields;
-        if (fields->count < DARAN_FIELDS_MAX && len > fields->start[fields->count]) {
-            fields->len[fields->count] = (daran_line_offset_t)(len - fields->start[fields->count]);
-            fields->count++;
-            drive->line_flags |= DARAN_LINE_IN_FIELD;
+        if (in != all) {
+            /* the line end: it ends the last field, and is never stored */
+            if (star_at == DARAN_LINE_MAX && at > start && count < DARAN_FIELDS_MAX) {
+                fields->start[count] = (daran_line_offset_t)start;
+                fields->len[count] = (daran_line_offset_t)(at - start);
+                count++;
+            }
+            if (*in++ != '\n') {
+                drive->line_flags |= DARAN_LINE_DAMAGED;
+            }
+            line_ended = true;
         }
     }
+    unsigned flags = drive->line_flags & ~DARAN_LINE_IN_FIELD;
+    if (star_at == DARAN_LINE_MAX && count < DARAN_FIELDS_MAX) {
+        fields->start[count] = (daran_line_offset_t)start;
+        if (at > start) {
+            /* The bytes end inside a field (a text without its line end, or
+             * the ring's run): count it, so the line is whole if nothing
+             * follows; the next bytes take it up again. */
+            fields->len[count] = (daran_line_offset_t)(at - start);
+            count++;
+            flags |= DARAN_LINE_IN_FIELD;
+        }
+    }
+    fields->count = (uint8_t)count;
+    drive->line_len = (uint16_t)at;
+    drive->line_flags = (uint8_t)flags;
+    drive->star_at = (uint16_t)star_at;
     *ended = line_ended;
     return n - (size_t)(all - in);
 }
