@@ -76,7 +76,7 @@ size_t daran_poll(daran_drive_t *drive)
     size_t lines = 0;
     while (left != 0u) {
         const uint8_t *bytes;
-        size_t run = daran_rx_run(&drive->rx, &bytes);
+        size_t run = daran_rx_run(&drive->rx, left, &bytes);
         if (*bytes == '\n' && drive->line_len == 0u && drive->line_flags == 0u) {
             /* An empty line: nothing to frame and nothing to answer (D5). */
             daran_rx_skip(&drive->rx, 1);
@@ -85,7 +85,7 @@ size_t daran_poll(daran_drive_t *drive)
             continue;
         }
         bool ended = false;
-        size_t taken = daran_framer_feed(drive, bytes, run < left ? run : left, true, &ended);
+        size_t taken = daran_framer_feed(drive, bytes, run, true, &ended);
         left -= taken;
         /* Free the line's slots before it runs: the producer may refill them. */
         daran_rx_skip(&drive->rx, taken);

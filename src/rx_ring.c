@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "atomics.h"
+#include "compiler.h"
 
 #define MASK DARAN_RX_MASK
 
@@ -81,16 +82,16 @@ static void store_run(uint8_t *slots, const uint8_t *bytes, size_t count)
     }
 }
 
-size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
+/* Any number of bytes: as many as fit are copied with one release for all
+ * of them; past a full ring, or while a line is being discarded, the bytes
+ * take put_slow() one at a time. */
+static DARAN_NOINLINE size_t write_bytes(daran_rx_ring_t *ring, const uint8_t *bytes, size_t len)
 {
-    daran_rx_ring_t *ring = &drive->rx;
-    const uint8_t *bytes = (const uint8_t *)data;
     uint16_t head = DARAN_LOAD_OWN(&ring->head);
     uint16_t tail = DARAN_LOAD_ACQUIRE(&ring->tail);
     size_t room = DARAN_RX_RING_SIZE - (uint16_t)(head - tail);
     size_t i = 0;
     if (!ring->producer_dropping) {
-        /* The common case: copy what fits, one release for all of it. */
         size_t fast = len < room ? len : room;
         size_t slot = head & MASK;
         size_t to_end = DARAN_RX_RING_SIZE - slot;
@@ -111,6 +112,23 @@ size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
     }
     DARAN_STORE_RELEASE(&ring->head, head);
     return queued;
+}
+
+size_t daran_rx_write(daran_drive_t *drive, const void *data, size_t len)
+{
+    daran_rx_ring_t *ring = &drive->rx;
+    const uint8_t *bytes = (const uint8_t *)data;
+    if (len == 1u && !ring->producer_dropping) {
+        /* One byte, as a UART interrupt hands them over (daran_rx_byte):
+         * no loop, no call, when there is room for it. */
+        uint16_t head = DARAN_LOAD_OWN(&ring->head);
+        if ((uint16_t)(head - DARAN_LOAD_ACQUIRE(&ring->tail)) < DARAN_RX_RING_SIZE) {
+            ring->bytes[head & MASK] = stored(*bytes);
+            DARAN_STORE_RELEASE(&ring->head, (uint16_t)(head + 1u));
+            return 1;
+        }
+    }
+    return write_bytes(ring, bytes, len);
 }
 
 uint32_t daran_rx_dropped(const daran_drive_t *drive)

@@ -23,18 +23,16 @@ static inline size_t daran_rx_queued(daran_rx_ring_t *ring)
     return (uint16_t)(DARAN_LOAD_ACQUIRE(&ring->head) - DARAN_LOAD_OWN(&ring->tail));
 }
 
-/* The oldest queued bytes up to the ring's end, as one contiguous run:
- * sets *bytes and returns the run's length (0 when nothing is queued). */
-static inline size_t daran_rx_run(daran_rx_ring_t *ring, const uint8_t **bytes)
+/* The oldest of the `queued` bytes (what daran_rx_queued() said, less what
+ * was skipped since) up to the ring's end, as one contiguous run: sets
+ * *bytes and returns the run's length. The consumer's own count spares a
+ * second acquire of `head` per run. */
+static inline size_t daran_rx_run(daran_rx_ring_t *ring, size_t queued, const uint8_t **bytes)
 {
-    uint16_t tail = DARAN_LOAD_OWN(&ring->tail);
-    uint16_t slot = (uint16_t)(tail & DARAN_RX_MASK);
-    size_t run = (uint16_t)(DARAN_LOAD_ACQUIRE(&ring->head) - tail);
-    if (run > (size_t)(DARAN_RX_RING_SIZE - slot)) {
-        run = (size_t)(DARAN_RX_RING_SIZE - slot);
-    }
+    uint16_t slot = (uint16_t)(DARAN_LOAD_OWN(&ring->tail) & DARAN_RX_MASK);
+    size_t to_end = (size_t)(DARAN_RX_RING_SIZE - slot);
     *bytes = &ring->bytes[slot];
-    return run;
+    return queued < to_end ? queued : to_end;
 }
 
 /* Hand the oldest n queued bytes (n <= the last run) back to the producer. */
