@@ -90,7 +90,12 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
     /* Every byte taken before the line end is stored: the line has room for
      * the bytes up to `end`, so the loop checks no length of its own. */
     size_t room = DARAN_LINE_MAX - drive->line_len;
-    const uint8_t *end = bytes + (n < room ? n : room);
+    size_t span = n < room ? n : room;
+    const uint8_t *end = bytes + span;
+#if DARAN_CHEAP_UNALIGNED_WORDS
+    /* where a whole word no longer fits before `end` */
+    const uint8_t *words_end = bytes + (span >= 3u ? span - 3u : 0u);
+#endif
     bool line_ended = false;
     for (;;) {
         /* A run of common field bytes is copied and passed over, a word at
@@ -98,20 +103,22 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
          * that stops the run is stored with it and decided below. */
         uint8_t byte;
 #if DARAN_CHEAP_UNALIGNED_WORDS
-        while ((size_t)(end - in) >= 4u) {
-            uint32_t word;
-            memcpy(&word, in, sizeof word);
-            memcpy(out, &word, sizeof word);
-            uint32_t stops = other_bytes_of(word);
-            if (stops != 0u) {
-                size_t run = first_flagged_byte(stops);
-                in += run;
-                out += run;
-                byte = *in++;
-                goto decide;
-            }
-            in += 4;
-            out += 4;
+        if (in < words_end) {
+            do {
+                uint32_t word;
+                memcpy(&word, in, sizeof word);
+                memcpy(out, &word, sizeof word);
+                uint32_t stops = other_bytes_of(word);
+                if (stops != 0u) {
+                    size_t run = first_flagged_byte(stops);
+                    in += run;
+                    out += run;
+                    byte = *in++;
+                    goto decide;
+                }
+                in += 4;
+                out += 4;
+            } while (in < words_end);
         }
 #endif
         do {

@@ -58,24 +58,34 @@ bool daran_rx_byte(daran_drive_t *drive, uint8_t byte)
     return daran_rx_write(drive, &byte, 1) == 1u;
 }
 
-/* Copy count bytes into consecutive slots, the marker value replaced: four
- * bytes a step while none of them is the marker (one test for all four:
- * the XOR makes the marker's bytes zero, and a zero byte is what the
- * subtraction's borrow finds), then one at a time. */
+/* Copy count bytes into consecutive slots, the marker value replaced:
+ * eight bytes a step while none of them has its top bit set (one test for
+ * all eight; the marker is such a byte, and text never has one), then four,
+ * then one at a time. */
 static void store_run(uint8_t *slots, const uint8_t *bytes, size_t count)
 {
-    const uint32_t ones = 0x01010101u;
-    while (count >= 4u) {
-        uint32_t word;
-        memcpy(&word, bytes, sizeof word);
-        uint32_t marks = word ^ (ones * DARAN_RX_DAMAGED_END);
-        if (((marks - ones) & ~marks & (ones * 0x80u)) != 0u) {
+    for (; count >= 8u; count -= 8u) {
+        uint32_t low;
+        uint32_t high;
+        memcpy(&low, bytes, sizeof low);
+        memcpy(&high, bytes + 4, sizeof high);
+        if (((low | high) & 0x80808080u) != 0u) {
             break;
         }
-        memcpy(slots, &word, sizeof word);
-        slots += 4;
-        bytes += 4;
-        count -= 4u;
+        memcpy(slots, &low, sizeof low);
+        memcpy(slots + 4, &high, sizeof high);
+        slots += 8;
+        bytes += 8;
+    }
+    if (count >= 4u) {
+        uint32_t word;
+        memcpy(&word, bytes, sizeof word);
+        if ((word & 0x80808080u) == 0u) {
+            memcpy(slots, &word, sizeof word);
+            slots += 4;
+            bytes += 4;
+            count -= 4u;
+        }
     }
     for (size_t i = 0; i < count; i++) {
         slots[i] = stored(bytes[i]);
