@@ -90,6 +90,13 @@ def main():
         md.append("| Cortex-M4, %s (QEMU instructions) | <= %s | %s | %s |" % (
             what, fmt(goal), fmt(n), verdict(n, goal)))
 
+    for budget in m4.get("budgets", []):
+        if budget["figure"].startswith("bytes:"):
+            md.append("| Cortex-M4, framing and the ring per byte, the longest `r` line (QEMU "
+                      "instructions; enforced by `perf_insns_per_line`) | <= %g | %.1f | %s |" % (
+                          budget["budget"], budget["measured"],
+                          "met" if budget["met"] else "**missed**"))
+
     ref = host["sessions"]["reference"]
     md.append("| host, reference.txt, byte path (`daran_rx_write` + `daran_poll`), per line | "
               "<= 600 | %s | %s |" % (fmt(ref["poll"]), verdict(ref["poll"], TARGETS["byte_path"])))

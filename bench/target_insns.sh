@@ -23,6 +23,9 @@ dirty=""
 qemu=$(qemu-system-arm --version | head -1)
 gcc=$(arm-none-eabi-gcc --version | head -1)
 
+# issue 20's instruction budgets, as tests/target/CMakeLists.txt gives them to CTest
+budgets="--budget 'e (seven lines)<=2000' --budget 'bytes:r longest path<=12' --report 't with checksum<=600' --report 'blank line<=40' --report 'r longest path<=1200' --report 'f<=350'"
+
 echo "== cortex-m4 preset: the library and daran-perf.elf"
 cmake --preset cortex-m4 >/dev/null
 cmake --build build/cortex-m4 --target daran_ascii daran-perf daran_target_sizeof >/dev/null
@@ -40,10 +43,12 @@ ctest --test-dir build/cortex-m4 -R "budget_core_flash|budget_drive_ram|budget_c
   arm-none-eabi-size -t build/cortex-m4/src/libdaran_ascii.a | tail -1
   echo '```'
   echo
-  echo "\`python3 tools/qemu-insn-count/measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf --profile \"t with checksum\" --max-t-checksum 600\`:"
+  echo "\`python3 tools/qemu-insn-count/measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf --profile \"t with checksum\" $budgets\`"
+  echo "(CTest \`perf_insns_per_line\` runs the same, and fails on a --budget that is over):"
   echo
-  python3 tools/qemu-insn-count/measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf \
-    --profile "t with checksum" --max-t-checksum 600 --json "$results/m4insns.json" || true
+  # shellcheck disable=SC2086
+  eval python3 tools/qemu-insn-count/measure_insns.py --elf build/cortex-m4/tests/target/daran-perf.elf \
+    --profile "'t with checksum'" $budgets --json "$results/m4insns.json" || true
 } >"$results/m4insns.md"
 cat "$results/m4insns.md"
 
