@@ -44,6 +44,12 @@ static const motion_shape_t shapes[DARAN_SHAPE_COUNT] = {
                                 VALUE(SLOT_KD, CHECK_NON_NEGATIVE)}},
 };
 
+/* Which optional value a slot gives the HAL (daran_move_t.given). */
+static const uint8_t slot_given[SLOT_COUNT] = {
+    [SLOT_VEL] = DARAN_GIVEN_VEL,
+    [SLOT_RATE] = DARAN_GIVEN_RATE,
+};
+
 /* The modes of v and c (spec 5), carried as the float a value slot holds:
  * a preset's mode is one of ms's floats. */
 #define MODE_DIRECT 1.0f        /* v: velocity, c: torque, each at once */
@@ -116,20 +122,20 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
 {
     const motion_shape_t *shape = &shapes[shape_id];
     float slot[SLOT_COUNT];
-    for (uint8_t i = 0; i < SLOT_COUNT; i++) {
-        slot[i] = i == SLOT_MODE ? MODE_DIRECT : 0.0f; /* the mode of v and c defaults to 1 */
+    slot[SLOT_POS] = slot[SLOT_VEL] = slot[SLOT_TORQUE] = slot[SLOT_RATE] = 0.0f;
+    slot[SLOT_KP] = slot[SLOT_KD] = slot[SLOT_PARAM] = slot[SLOT_IGNORED] = 0.0f;
+    slot[SLOT_MODE] = MODE_DIRECT; /* the mode of v and c defaults to 1 */
+    unsigned given = 0;
+    for (uint8_t i = 0; i < count; i++) {
+        unsigned to = SLOT_OF(shape->value[i]);
+        slot[to] = values[i];
+        given |= slot_given[to];
     }
     move->kind = (daran_move_kind_t)shape->kind;
-    move->given = 0;
-    for (uint8_t i = 0; i < count; i++) {
-        slot[SLOT_OF(shape->value[i])] = values[i];
-        if (SLOT_OF(shape->value[i]) == SLOT_VEL && shape->kind == DARAN_MOVE_TRAPEZOID) {
-            move->given |= DARAN_GIVEN_VEL;
-        }
-        if (SLOT_OF(shape->value[i]) == SLOT_RATE) {
-            move->given |= DARAN_GIVEN_RATE;
-        }
+    if (shape->kind != DARAN_MOVE_TRAPEZOID) {
+        given &= ~DARAN_GIVEN_VEL; /* a cruise velocity is a trapezoid's alone */
     }
+    move->given = (uint8_t)given;
 
     /* v and c: the mode says what the parameter is. A ramp needs a rate
      * >= 0; 0 holds the setpoint where it is (spec 10.1). */
