@@ -4,6 +4,7 @@
 #ifndef DARAN_ASCII_H
 #define DARAN_ASCII_H
 
+#include "daran_can.h"
 #include "daran_config.h"
 #include "daran_drive.h"
 #include "daran_hal.h"

@@ -26,11 +26,12 @@
 #define DARAN_SIG_AXIS 1u
 
 /* One row: its id picks a multiplier, its attributes the value multiplied. */
-#define DARAN_SIG_ROW_(id, path, scope, type, access, range, unit)                          \
+#define DARAN_SIG_ROW_(id, path, scope, type, access, range, unit, can)                     \
     +((uint32_t)DARAN_PROP_##id * 0x9E3779B1u + 0x7F4A7C15u) *                             \
          (((uint32_t)sizeof(path) << 20) ^ ((uint32_t)sizeof(unit) << 14) ^                 \
           ((uint32_t)DARAN_TYPE_##type << 11) ^ (DARAN_SIG_##access << 10) ^                 \
-          (DARAN_SIG_##scope << 9) ^ (uint32_t)DARAN_RANGE_##range ^ 0x5BD1E995u)
+          (DARAN_SIG_##scope << 9) ^ (uint32_t)DARAN_RANGE_##range ^                         \
+          ((uint32_t)(can) << 15) ^ 0x5BD1E995u)
 #define DARAN_SIG_RANGE_(name, text) \
     +((uint32_t)DARAN_RANGE_##name + 1u) * (uint32_t)sizeof(text) * 0x85EBCA6Bu
 #define DARAN_SIG_OMIT_(id) +((uint32_t)DARAN_PROP_##id + 1u) * 0xC2B2AE35u

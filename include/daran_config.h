@@ -98,6 +98,19 @@
 #define DARAN_ENABLE_S_CURVE 1
 #endif
 
+/** 1 (default): the vendor's CAN protocol as a second front end
+ * (daran_can.h, docs/can.md). 0 compiles it out: a seed-only or ASCII-only
+ * build pays nothing for it. */
+#ifndef DARAN_ENABLE_CAN
+#define DARAN_ENABLE_CAN 1
+#endif
+
+/** Received frames the CAN front end holds between daran_can_receive() and
+ * daran_can_poll(): a power of two, 10 bytes of RAM each. */
+#ifndef DARAN_CAN_RX_FRAMES
+#define DARAN_CAN_RX_FRAMES 8
+#endif
+
 /* DARAN_PORT_BARRIER(): not defined here. Only a core built as C99 (no
  * <stdatomic.h>) by a compiler without the GCC/clang __atomic builtins needs
  * it: the port's options header defines it as a full memory barrier of its
@@ -136,6 +149,16 @@
 #endif
 #if DARAN_ENABLE_S_CURVE != 0 && DARAN_ENABLE_S_CURVE != 1
 #error "DARAN_ENABLE_S_CURVE must be 0 or 1"
+#endif
+#if DARAN_ENABLE_CAN != 0 && DARAN_ENABLE_CAN != 1
+#error "DARAN_ENABLE_CAN must be 0 or 1"
+#endif
+#if DARAN_CAN_RX_FRAMES < 2 || DARAN_CAN_RX_FRAMES > 256 || \
+    (DARAN_CAN_RX_FRAMES & (DARAN_CAN_RX_FRAMES - 1)) != 0
+#error "DARAN_CAN_RX_FRAMES must be a power of two within 2..256"
+#endif
+#if DARAN_ENABLE_CAN && DARAN_MOTOR_ID_MAX > 63
+#error "DARAN_ENABLE_CAN needs DARAN_MOTOR_ID_MAX <= 63 (a CAN node id has 6 bits)"
 #endif
 #if DARAN_MOTOR_ID_MAX < 1 || DARAN_MOTOR_ID_MAX > 255
 #error "DARAN_MOTOR_ID_MAX must be within 1..255"

@@ -123,7 +123,10 @@ typedef enum daran_action {
     DARAN_ACTION_CLEAR_ERRORS,  /**< `sc`: clear the error flags (state stays idle) */
     DARAN_ACTION_SET_ZERO,      /**< `sz`: current position becomes 0, setpoints shift with it */
     DARAN_ACTION_ESTOP,         /**< `st`: go idle with DARAN_FLAG_ESTOP */
-    DARAN_ACTION_FEED_WATCHDOG  /**< `u`, and after every accepted motion command */
+    DARAN_ACTION_FEED_WATCHDOG, /**< `u`, and after every accepted motion command; on CAN every frame for the drive (C18) */
+    DARAN_ACTION_NODE_GUARD     /**< CAN node guarding expired (`can.config.timeout_ms`, C16):
+                                     go idle with DARAN_FLAG_WATCHDOG, as on an axis watchdog
+                                     expiry (idle damping where the port has it) */
 } daran_action_t;
 
 /** The port's functions. All four are required. */

@@ -173,7 +173,7 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
 
 /* Build the move and run it. Kept out of daran_cmd_motion() so the move is not
  * on the stack while the values are parsed: that chain is the core's deepest. */
-static DARAN_NOINLINE daran_result_t run_shape(daran_drive_t *drive, daran_shape_t shape_id,
+DARAN_NOINLINE daran_result_t daran_run_motion(daran_drive_t *drive, daran_shape_t shape_id,
                                                const float *values, uint8_t count)
 {
     daran_move_t move;
@@ -197,5 +197,5 @@ daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *req
             return result;
         }
     }
-    return run_shape(drive, shape_id, values, count);
+    return daran_run_motion(drive, shape_id, values, count);
 }

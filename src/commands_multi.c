@@ -13,6 +13,8 @@
  * triangle (spec section 6): hosts send the minimum duration, which float32
  * rounding can push a hair too short. */
 #define TIMED_MOVE_SLACK 1e-4f
+/* One count of a CAN preset's duration field, in seconds (s16 x 100). */
+#define CAN_DURATION_STEP 0.01f
 
 daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request)
 {
@@ -24,11 +26,16 @@ daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request
             return result;
         }
     }
+    daran_store_preset(drive, values, DARAN_PRESET_FROM_LINE);
+    return DARAN_OK;
+}
+
+void daran_store_preset(daran_drive_t *drive, const float *values, uint8_t origin)
+{
     for (uint8_t i = 0; i < DARAN_PRESET_VALUES; i++) {
         drive->preset[i] = values[i];
     }
-    drive->has_preset = 1;
-    return DARAN_OK;
+    drive->has_preset = origin;
 }
 
 /* Cruise velocity that covers distance d (deg) in exactly t (s) at accel a
@@ -39,7 +46,8 @@ daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request
  * so no cancellation eats its digits. A zero duration or acceleration can
  * only be kept by a drive that need not move (spec 10.1, D41). @p move comes
  * with the target alone (nothing given, no cruise, no rate). */
-static daran_result_t timed_move(float d, float t, float a, bool s_curve, daran_move_t *move)
+static daran_result_t timed_move(float d, float t, float a, bool s_curve, float slack,
+                                 daran_move_t *move)
 {
     if (d == 0.0f) {
         return DARAN_OK; /* nothing to plan: the drive keeps its settings and any running move */
@@ -49,6 +57,14 @@ static daran_result_t timed_move(float d, float t, float a, bool s_curve, daran_
     }
     move->given = DARAN_GIVEN_VEL | DARAN_GIVEN_RATE;
     float ramps = s_curve ? 8.0f : 4.0f;
+    /* A duration short of the least one by less than @p slack seconds (a
+     * CAN preset's, C13) runs in the least: the triangle at acceleration a. */
+    if (slack > 0.0f) {
+        float least = sqrtf(ramps * d / a);
+        if (t < least && least - t < slack) {
+            t = least;
+        }
+    }
     float at = a * t;
     float discriminant = at * at - ramps * a * d;
     float v;
@@ -99,10 +115,9 @@ static daran_result_t uses_s_curve(daran_drive_t *drive, bool *s_curve)
  * running move's end (`input_pos`) while `trajectory_done` reads 0, else the
  * position setpoint (also on a port without those properties). Its move is
  * built from p1 alone: p2 and p3 are not q's cruise and acceleration. */
-static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uint32_t rel,
-                                  daran_move_t *move)
+static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, const float *values,
+                                  bool rel, daran_move_t *move)
 {
-    const float *values = drive->preset;
     bool timed = shape == DARAN_SHAPE_TRAPEZOID;
     if (timed && (!(values[1] >= 0.0f) || !(values[2] >= 0.0f))) {
         return DARAN_ERR_OUT_OF_RANGE;
@@ -120,7 +135,7 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
     if (result != DARAN_OK) {
         return result;
     }
-    if (rel != 0u) {
+    if (rel) {
         move->pos_deg += setpoint.f32;
     }
     if (!daran_is_finite(move->pos_deg)) {
@@ -145,13 +160,13 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, uin
     if (result != DARAN_OK && result != DARAN_ERR_INVALID_PROPERTY) {
         return result;
     }
+    float slack = drive->has_preset == DARAN_PRESET_FROM_CAN ? CAN_DURATION_STEP : 0.0f;
     return timed_move(fabsf(move->pos_deg - setpoint.f32), values[1],
-                      values[2] * DEG_PER_S_PER_RPM, s_curve, move);
+                      values[2] * DEG_PER_S_PER_RPM, s_curve, slack, move);
 }
 
 daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *request)
 {
-    daran_shape_t shape = (daran_shape_t)request->command->arg;
     uint32_t rel = 0;
     if (request->fields->count == 3u) { /* mt, mq, mp: 0 absolute, 1 relative */
         daran_field_t field = daran_field_at(request, 2);
@@ -160,24 +175,48 @@ daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *requ
             return result;
         }
     }
+    return daran_start_preset(drive, (daran_shape_t)request->command->arg, drive->preset, rel != 0u,
+                              request->motor == 0u);
+}
+
+daran_result_t daran_start_preset(daran_drive_t *drive, daran_shape_t shape, const float *values,
+                                  bool rel, bool broadcast)
+{
     /* A broadcast start is not for a drive that holds no preset (D18). */
-    if (request->motor == 0u && !drive->has_preset) {
+    if (broadcast && drive->has_preset == DARAN_PRESET_NONE) {
         return DARAN_OK;
     }
     daran_result_t result = daran_check_motion_allowed(drive);
     if (result != DARAN_OK) {
         return result;
     }
-    if (!drive->has_preset) {
+    if (drive->has_preset == DARAN_PRESET_NONE) {
         return DARAN_ERR_NO_PRESET;
     }
     daran_move_t move;
-    result = preset_move(drive, shape, rel, &move);
+    result = preset_move(drive, shape, values, rel, &move);
     if (result == DARAN_OK) {
         result = daran_start_move(drive, &move);
     }
     if (result == DARAN_OK) {
-        drive->has_preset = 0; /* a start consumes its preset; a refused one keeps it (D16) */
+        drive->has_preset = DARAN_PRESET_NONE; /* a start consumes its preset; a refused one keeps it (D16) */
+    }
+    return result;
+}
+
+daran_result_t daran_start_impedance(daran_drive_t *drive, float kp, float kd, bool broadcast)
+{
+    if (drive->has_preset == DARAN_PRESET_NONE) {
+        return broadcast ? DARAN_OK : DARAN_ERR_NO_PRESET;
+    }
+    const float values[DARAN_MOTION_VALUES_MAX] = {drive->preset[0], drive->preset[1],
+                                                   drive->preset[2], kp, kd};
+    daran_result_t result = daran_shape_check(DARAN_SHAPE_IMPEDANCE, values, 5);
+    if (result == DARAN_OK) {
+        result = daran_run_motion(drive, DARAN_SHAPE_IMPEDANCE, values, 5);
+    }
+    if (result == DARAN_OK) {
+        drive->has_preset = DARAN_PRESET_NONE;
     }
     return result;
 }

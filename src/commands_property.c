@@ -32,25 +32,48 @@ static daran_result_t parse_integer(daran_prop_type_t type, const daran_field_t 
     return daran_parse_u64(text, len, magnitude);
 }
 
-/* Grammar and range of the written value, as the property's table row says. */
-static daran_result_t parse_property_value(daran_property_t row, const daran_field_t *field,
-                                  daran_value_t *value)
+daran_result_t daran_check_property_value(daran_prop_t prop, daran_value_t value)
 {
+    daran_property_t row = daran_property_row(prop);
     daran_range_t range = DARAN_PROPERTY_RANGE(row);
-    daran_prop_type_t type = DARAN_PROPERTY_TYPE(row);
-    if (type == DARAN_TYPE_F32) {
-        daran_result_t result = daran_field_f32(field, &value->f32);
+    switch (DARAN_PROPERTY_TYPE(row)) {
+    case DARAN_TYPE_F32: {
 #if DARAN_F32_INTERVALS
-        if (result == DARAN_OK && !daran_range_holds_f32(range, value->f32)) {
+        bool holds = daran_range_holds_f32(range, value.f32);
 #else
         /* this build's float ranges are sign conditions: test the sign, -0
          * counting as 0 (D27) */
-        int64_t sign = value->f32 > 0.0f ? 1 : (value->f32 < 0.0f ? -1 : 0);
-        if (result == DARAN_OK && !daran_range_holds(range, sign)) {
+        int64_t sign = value.f32 > 0.0f ? 1 : (value.f32 < 0.0f ? -1 : 0);
+        bool holds = daran_range_holds(range, sign);
 #endif
-            result = DARAN_ERR_OUT_OF_RANGE;
+        return holds && daran_is_finite(value.f32) ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+    }
+    case DARAN_TYPE_U64:
+        return DARAN_OK; /* the whole unsigned range, no range rule */
+    case DARAN_TYPE_S32:
+        return daran_range_holds(range, value.s32) ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+    default:
+        if (!daran_range_holds(range, (int64_t)value.u32)) {
+            return DARAN_ERR_OUT_OF_RANGE;
         }
-        return result;
+#if DARAN_ENABLE_TELEMETRY
+        if (range == DARAN_RANGE_TELEMETRY && !daran_telemetry_fits(value.u32)) {
+            return DARAN_ERR_OUT_OF_RANGE; /* its report might not fit DARAN_REPLY_MAX */
+        }
+#endif
+        return DARAN_OK;
+    }
+}
+
+/* The written value's grammar, as the property's type says; its range is
+ * daran_check_property_value()'s. */
+static daran_result_t parse_property_value(daran_prop_t prop, const daran_field_t *field,
+                                           daran_value_t *value)
+{
+    daran_prop_type_t type = DARAN_PROPERTY_TYPE(daran_property_row(prop));
+    if (type == DARAN_TYPE_F32) {
+        daran_result_t result = daran_field_f32(field, &value->f32);
+        return result == DARAN_OK ? daran_check_property_value(prop, *value) : result;
     }
     uint64_t magnitude;
     bool negative;
@@ -66,45 +89,34 @@ static daran_result_t parse_property_value(daran_property_t row, const daran_fie
     if (magnitude > (type == DARAN_TYPE_S32 ? (negative ? 0x80000000u : 0x7FFFFFFFu) : UINT32_MAX)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
-    int64_t signed_value = negative ? -(int64_t)magnitude : (int64_t)magnitude;
-    if (!daran_range_holds(range, signed_value)) {
-        return DARAN_ERR_OUT_OF_RANGE;
-    }
-#if DARAN_ENABLE_TELEMETRY
-    if (range == DARAN_RANGE_TELEMETRY && !daran_telemetry_fits((uint32_t)magnitude)) {
-        return DARAN_ERR_OUT_OF_RANGE; /* its report might not fit DARAN_REPLY_MAX */
-    }
-#endif
     if (type == DARAN_TYPE_S32) {
-        value->s32 = (int32_t)signed_value;
+        value->s32 = (int32_t)(negative ? -(int64_t)magnitude : (int64_t)magnitude);
     } else {
-        value->u32 = (uint32_t)magnitude;
+        value->u32 = (uint32_t)magnitude; /* parse_integer takes a sign for s32 alone */
     }
-    return DARAN_OK;
+    return daran_check_property_value(prop, *value);
+}
+
+daran_result_t daran_commit_property(daran_drive_t *drive, daran_prop_t prop, daran_value_t value)
+{
+    if (prop == DARAN_PROP_REQUESTED_STATE && value.u32 == DARAN_STATE_CLOSED_LOOP) {
+        /* Closing the loop is refused while a flag still holds the drive (D21). */
+        daran_result_t result = daran_check_motion_allowed(drive);
+        if (result != DARAN_OK && result != DARAN_ERR_MOTOR_IDLE) {
+            return result;
+        }
+    }
+    return daran_set(drive, prop, value);
 }
 
 daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)
 {
-    daran_property_t row = daran_property_row(request->prop);
-    if (DARAN_PROPERTY_ACCESS(row) != DARAN_ACCESS_RW) {
+    if (DARAN_PROPERTY_ACCESS(daran_property_row(request->prop)) != DARAN_ACCESS_RW) {
         return DARAN_ERR_READ_ONLY;
     }
     daran_value_t value;
     value.u64 = 0;
     daran_field_t field = daran_field_at(request, 2);
-    daran_result_t result = parse_property_value(row, &field, &value);
-    if (result != DARAN_OK) {
-        return result;
-    }
-    if (request->prop == DARAN_PROP_REQUESTED_STATE && value.u32 == DARAN_STATE_CLOSED_LOOP) {
-        /* Closing the loop is refused while a flag still holds the drive (D21). */
-        result = daran_check_motion_allowed(drive);
-        if (result == DARAN_ERR_MOTOR_IDLE) {
-            result = DARAN_OK;
-        }
-        if (result != DARAN_OK) {
-            return result;
-        }
-    }
-    return daran_set(drive, request->prop, value);
+    daran_result_t result = parse_property_value(request->prop, &field, &value);
+    return result == DARAN_OK ? daran_commit_property(drive, request->prop, value) : result;
 }

@@ -3,12 +3,16 @@
 #include "handlers.h"
 #include "hal.h"
 
-daran_result_t daran_cmd_action(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_run_action(daran_drive_t *drive, daran_action_t action)
 {
-    daran_action_t action = (daran_action_t)request->command->arg;
     daran_result_t result = daran_act(drive, action);
     if (result == DARAN_OK && action == DARAN_ACTION_REBOOT) {
-        drive->has_preset = 0; /* a reboot forgets what RAM held (D16) */
+        drive->has_preset = DARAN_PRESET_NONE; /* a reboot forgets what RAM held (D16) */
     }
     return result;
+}
+
+daran_result_t daran_cmd_action(daran_drive_t *drive, const daran_request_t *request)
+{
+    return daran_run_action(drive, (daran_action_t)request->command->arg);
 }

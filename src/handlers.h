@@ -43,6 +43,41 @@ daran_result_t daran_shape_check(daran_shape_t shape, const float *values, uint8
 daran_result_t daran_shape_move(daran_shape_t shape, const float *values, uint8_t count,
                                 daran_move_t *move);
 
+/* The requests both front ends make once their values are decoded (the
+ * ASCII handlers below parse text into them, can.c decodes frames into
+ * them), so ranges, state rules and HAL calls are written once. */
+
+/* commands_motion.c: the move of @p count values checked against the shape
+ * (daran_shape_check()), after the drive's state, to the HAL. */
+daran_result_t daran_run_motion(daran_drive_t *drive, daran_shape_t shape, const float *values,
+                                uint8_t count);
+
+/* commands_multi.c: presets and their starts. Where a preset came from
+ * (drive->has_preset): a start of a CAN preset forgives a duration short by
+ * less than one count of the CAN field (C13). */
+#define DARAN_PRESET_NONE 0u
+#define DARAN_PRESET_FROM_LINE 1u
+#define DARAN_PRESET_FROM_CAN 2u
+void daran_store_preset(daran_drive_t *drive, const float *values, uint8_t origin);
+/* Start the preset as @p shape (t q p v c) with @p values in place of the
+ * stored ones (the same, or a CAN start's reading of them), relative to the
+ * position setpoint when @p rel; a broadcast start is not for a drive
+ * without a preset (D18). The preset is consumed when the move starts. */
+daran_result_t daran_start_preset(daran_drive_t *drive, daran_shape_t shape, const float *values,
+                                  bool rel, bool broadcast);
+/* The CAN impedance start (sub-code 0x15): the preset's pdes, vdes, tff with
+ * @p kp and @p kd, as `d` would run them. */
+daran_result_t daran_start_impedance(daran_drive_t *drive, float kp, float kd, bool broadcast);
+
+/* commands_property.c: does @p value (in @p prop's type) pass the row's
+ * range; then write it, refusing `requested_state` 8 while a flag holds the
+ * drive (D21). Access is the caller's to check first. */
+daran_result_t daran_check_property_value(daran_prop_t prop, daran_value_t value);
+daran_result_t daran_commit_property(daran_drive_t *drive, daran_prop_t prop, daran_value_t value);
+
+/* commands_system.c: a HAL action, and what the core forgets with it. */
+daran_result_t daran_run_action(daran_drive_t *drive, daran_action_t action);
+
 /* commands_query.c: read @p count (<= DARAN_APPEND_MAX) properties, then
  * append them to the line being built, each formatted by its type and after
  * a space unless the line is still empty; nothing is appended when a read

@@ -12,7 +12,7 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LIST = os.path.join(ROOT, "include", "daran_properties.h")
 OUT = os.path.join(ROOT, "docs", "properties.md")
-ROW_RE = re.compile(r'X\(\s*(\w+)\s*,\s*"([^"]*)"\s*,\s*(SYSTEM|AXIS)\s*,\s*(\w+)\s*,\s*(RO|RW)\s*,\s*(\w+)\s*,\s*"([^"]*)"\s*\)')
+ROW_RE = re.compile(r'X\(\s*(\w+)\s*,\s*"([^"]*)"\s*,\s*(SYSTEM|AXIS)\s*,\s*(\w+)\s*,\s*(RO|RW)\s*,\s*(\w+)\s*,\s*"([^"]*)"\s*,\s*(\d+)\s*\)')
 
 CONFIG = os.path.join(ROOT, "include", "daran_config.h")
 
@@ -41,13 +41,17 @@ def generate():
            "`ro` rows answer `read only property`. Rotor-side families (`controller.*`,",
            "`encoder.*`, `motor.*`, `trap_traj.*`) use ODrive units, `output_shaft.*` protocol",
            "units; `config.extra_setting.gear_ratio` links them (output = rotor / gear_ratio).",
-           "Defaults are the simulated drive's ([simulator.md](simulator.md)).", "",
-           "| path | type | access | unit | range |", "|---|---|---|---|---|"]
-    for ident, path, scope, typ, access, rng, unit in rows:
+           "Defaults are the simulated drive's ([simulator.md](simulator.md)). CAN: the address",
+           "of read 0x01E / write 0x01F and its type code (0 f32, 3 u32 and bool, 4 s32;",
+           "[can.md](can.md)); `-` for none.", "",
+           "| path | type | access | unit | range | CAN |", "|---|---|---|---|---|---|"]
+    codes = {"F32": 0, "U32": 3, "BOOL": 3, "S32": 4}
+    for ident, path, scope, typ, access, rng, unit, can in rows:
         full = ("axis0." + path) if scope == "AXIS" else path
         rtext = RANGES[rng] if access == "RW" else ""
-        out.append("| `%s` | %s | %s | %s | %s |" % (full, typ.lower(), access.lower(), unit or "-",
-                                                    rtext.replace("|", "\\|")))
+        ctext = "%s (%d)" % (can, codes[typ]) if int(can) else "-"
+        out.append("| `%s` | %s | %s | %s | %s | %s |" % (full, typ.lower(), access.lower(), unit or "-",
+                                                         rtext.replace("|", "\\|"), ctext))
     out.append("")
     out.append("%d properties." % len(rows))
     return "\n".join(out) + "\n"

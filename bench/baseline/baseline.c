@@ -73,7 +73,7 @@ typedef struct bl_property {
  * list: the vendor's whole table), but a plain array of C strings scanned
  * front to back, as ODrive-style endpoint tables are. */
 static const bl_property_t properties[] = {
-#define BL_ROW(id, path, scope, type, access, range, unit) \
+#define BL_ROW(id, path, scope, type, access, range, unit, can) \
     {path, DARAN_PROP_##id, BL_##scope, BL_##type, BL_##access, BL_R_##range},
     DARAN_PROPERTY_LIST(BL_ROW)
 #undef BL_ROW

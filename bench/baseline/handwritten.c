@@ -45,7 +45,7 @@ typedef struct hw_property {
 
 /* Row i is property id i (the list order is the id order). */
 static const hw_property_t properties[] = {
-#define HW_ROW(id, path, scope, type, access, range, unit)                                  \
+#define HW_ROW(id, path, scope, type, access, range, unit, can)                                  \
     {path, (uint8_t)(sizeof path - 1u), HW_SCOPE_##scope, DARAN_TYPE_##type,               \
      HW_ACCESS_##access, DARAN_RANGE_##range},
     DARAN_PROPERTY_LIST(HW_ROW)

@@ -4,6 +4,6 @@
 #ifndef BENCH_ROWS_ONLY_H
 #define BENCH_ROWS_ONLY_H
 #define DARAN_PORT_PROPERTY_LIST(X) \
-    X(BRAKE_CHOPPER_HZ,  "brake.chopper_hz",  AXIS, F32, RW, NON_NEGATIVE, "Hz") \
-    X(BRAKE_TEMPERATURE, "brake.temperature", AXIS, F32, RO, NONE,         "degC")
+    X(BRAKE_CHOPPER_HZ,  "brake.chopper_hz",  AXIS, F32, RW, NON_NEGATIVE, "Hz", 0) \
+    X(BRAKE_TEMPERATURE, "brake.temperature", AXIS, F32, RO, NONE,         "degC", 0)
 #endif

@@ -250,8 +250,10 @@ static daran_result_t action(void *ctx, daran_action_t which)
         s[DARAN_PROP_POS_SETPOINT].f32 -= here;
         return DARAN_OK;
     }
+    case DARAN_ACTION_NODE_GUARD:
     case DARAN_ACTION_ESTOP:
-        s[DARAN_PROP_AXIS_ERROR].u32 |= DARAN_FLAG_ESTOP;
+        s[DARAN_PROP_AXIS_ERROR].u32 |=
+            which == DARAN_ACTION_ESTOP ? DARAN_FLAG_ESTOP : DARAN_FLAG_WATCHDOG;
         s[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_IDLE;
         s[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_IDLE;
         drive->plant.mode = ACME_PLANT_HOLD;

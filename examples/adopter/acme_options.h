@@ -13,7 +13,7 @@
 
 /* The cooling fan of the X1's power stage: DARAN_PROP_FAN_DUTY. */
 #define DARAN_PORT_PROPERTY_LIST(X) \
-    X(FAN_DUTY, "fan.duty", AXIS, F32, RW, UNIT_INTERVAL, "")
+    X(FAN_DUTY, "fan.duty", AXIS, F32, RW, UNIT_INTERVAL, "", 0)
 
 /* The X1 has an incremental encoder only: no absolute position or turn
  * count. The paths answer `invalid property`; the ids stay. */

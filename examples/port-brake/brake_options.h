@@ -16,8 +16,8 @@
  * The core checks `>= 0` before the HAL sees a write; the chopper's own upper
  * limit (50 kHz) is the HAL's to enforce, as for `sb`. */
 #define DARAN_PORT_PROPERTY_LIST(X) \
-    X(BRAKE_CHOPPER_HZ,  "brake.chopper_hz",  AXIS, F32, RW, NON_NEGATIVE, "Hz") \
-    X(BRAKE_TEMPERATURE, "brake.temperature", AXIS, F32, RO, NONE,         "degC")
+    X(BRAKE_CHOPPER_HZ,  "brake.chopper_hz",  AXIS, F32, RW, NON_NEGATIVE, "Hz", 0) \
+    X(BRAKE_TEMPERATURE, "brake.temperature", AXIS, F32, RO, NONE,         "degC", 0)
 
 /* This board has an incremental encoder only: no SPI absolute encoder, so
  * its buffers and absolute readings are left out. The ids stay (the enum

@@ -23,7 +23,7 @@ static daran_value_t props[DARAN_PROP_COUNT];
 #define PROP(id) props[DARAN_PROP_##id]
 
 /* Paths for the log, from the same lists the core's table is made of. */
-#define PATH_ROW(id, path, scope, type, access, range, unit) {#scope, path, DARAN_TYPE_##type},
+#define PATH_ROW(id, path, scope, type, access, range, unit, can) {#scope, path, DARAN_TYPE_##type},
 static const struct {
     const char *scope;
     const char *path;

@@ -40,6 +40,7 @@ static void boot(minimal_drive_t *drive)
     drive->props[DARAN_PROP_VBUS_VOLTAGE].f32 = 24.0f;
     drive->props[DARAN_PROP_UART_BAUDRATE].u32 = 115200;
     drive->props[DARAN_PROP_CAN_BAUD_RATE].u32 = 1000000;
+    drive->props[DARAN_PROP_CAN_PROTOCOL].u32 = 1; /* the vendor protocol on CAN (C15) */
     drive->props[DARAN_PROP_INPUT_FILTER_BANDWIDTH].f32 = 20.0f;
     drive->props[DARAN_PROP_TORQUE_CONSTANT].f32 = 0.1f;
     drive->props[DARAN_PROP_FW_VERSION].u32 = 100;
@@ -187,6 +188,10 @@ static daran_result_t action(void *ctx, daran_action_t which)
         return DARAN_OK;
     case DARAN_ACTION_ESTOP:
         p[DARAN_PROP_AXIS_ERROR].u32 |= DARAN_FLAG_ESTOP;
+        p[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_IDLE;
+        return DARAN_OK;
+    case DARAN_ACTION_NODE_GUARD:
+        p[DARAN_PROP_AXIS_ERROR].u32 |= DARAN_FLAG_WATCHDOG;
         p[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_IDLE;
         return DARAN_OK;
     case DARAN_ACTION_CLEAR_ERRORS:

@@ -120,6 +120,9 @@ static daran_result_t hal_action(void *ctx, daran_action_t action)
     case DARAN_ACTION_FEED_WATCHDOG:
         daran_sim_model_feed_watchdog(&d->model);
         return DARAN_OK;
+    case DARAN_ACTION_NODE_GUARD:
+        daran_sim_model_trip(&d->model, DARAN_FLAG_WATCHDOG);
+        return DARAN_OK;
     default:
         return DARAN_ERR_MOTOR_FAULT;
     }

@@ -205,7 +205,7 @@ static float from_view(view_kind_t kind, float g, float x)
 #endif
 
 enum {
-#define DARAN_SIM_COUNT_(id, path, scope, type, access, range, unit) +1
+#define DARAN_SIM_COUNT_(id, path, scope, type, access, range, unit, can) +1
     VENDOR_PROP_COUNT = 0 DARAN_PROPERTY_LIST(DARAN_SIM_COUNT_)
 #undef DARAN_SIM_COUNT_
 };
@@ -213,7 +213,7 @@ enum {
 #define DARAN_SIM_ACCESS_RW 1u
 #define DARAN_SIM_ACCESS_RO 0u
 static const uint8_t prop_is_rw[DARAN_PROP_COUNT] = {
-#define DARAN_SIM_RW_(id, path, scope, type, access, range, unit) \
+#define DARAN_SIM_RW_(id, path, scope, type, access, range, unit, can) \
     (uint8_t)DARAN_SIM_ACCESS_##access,
     DARAN_PROPERTY_LIST(DARAN_SIM_RW_)
     DARAN_SIM_PORT_ROWS_(DARAN_SIM_RW_)
@@ -221,7 +221,7 @@ static const uint8_t prop_is_rw[DARAN_PROP_COUNT] = {
 };
 
 static const daran_prop_type_t prop_type[DARAN_PROP_COUNT] = {
-#define DARAN_SIM_TYPE_(id, path, scope, type, access, range, unit) DARAN_TYPE_##type,
+#define DARAN_SIM_TYPE_(id, path, scope, type, access, range, unit, can) DARAN_TYPE_##type,
     DARAN_PROPERTY_LIST(DARAN_SIM_TYPE_)
     DARAN_SIM_PORT_ROWS_(DARAN_SIM_TYPE_)
 #undef DARAN_SIM_TYPE_

@@ -194,7 +194,7 @@ static const struct {
 } probe_rows[] = {
 #define DARAN_SIM_PROBE_AXIS_AXIS true
 #define DARAN_SIM_PROBE_AXIS_SYSTEM false
-#define DARAN_SIM_PROBE_ROW_(id, path, scope, type, access, range, unit) \
+#define DARAN_SIM_PROBE_ROW_(id, path, scope, type, access, range, unit, can) \
     {path, DARAN_SIM_PROBE_AXIS_##scope, DARAN_TYPE_##type},
     DARAN_PROPERTY_LIST(DARAN_SIM_PROBE_ROW_)
 #undef DARAN_SIM_PROBE_ROW_

@@ -8,7 +8,7 @@
 #include "conformance.h"
 
 /* The vendor's rows come first; a port's own rows follow (daran_properties.h). */
-#define CONF_COUNT_ROW_(id, path, scope, type, access, range, unit) +1u
+#define CONF_COUNT_ROW_(id, path, scope, type, access, range, unit, can) +1u
 #define VENDOR_ROWS ((size_t)(0u DARAN_PROPERTY_LIST(CONF_COUNT_ROW_)))
 
 static const char *line_end(void)

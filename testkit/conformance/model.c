@@ -38,7 +38,7 @@ typedef struct conf_row {
     const char *unit;
 } conf_row_t;
 
-#define CONF_ROW_(id, path, scope, type, access, range, unit) \
+#define CONF_ROW_(id, path, scope, type, access, range, unit, can) \
     {DARAN_PROP_##id, path, CONF_SCOPE_##scope, DARAN_TYPE_##type, CONF_ACCESS_##access, DARAN_RANGE_##range, unit},
 static const conf_row_t rows[] = {
     DARAN_PROPERTY_LIST(CONF_ROW_)

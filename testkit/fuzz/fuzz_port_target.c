@@ -58,7 +58,7 @@ typedef struct prop_row {
 
 #define DARAN_FUZZ_WRITABLE_RW true
 #define DARAN_FUZZ_WRITABLE_RO false
-#define DARAN_FUZZ_ROW(id, path, scope, type, access, range, unit) \
+#define DARAN_FUZZ_ROW(id, path, scope, type, access, range, unit, can) \
     [DARAN_PROP_##id] = {DARAN_FUZZ_WRITABLE_##access, DARAN_TYPE_##type},
 static const prop_row_t rows[DARAN_PROP_COUNT] = {
     DARAN_PROPERTY_LIST(DARAN_FUZZ_ROW)
@@ -325,7 +325,7 @@ static void check_promises(const daran_call_t *c, const before_line_t *before)
         }
         return;
     case DARAN_CALL_ACTION:
-        if ((unsigned)c->action > (unsigned)DARAN_ACTION_FEED_WATCHDOG) {
+        if ((unsigned)c->action > (unsigned)DARAN_ACTION_NODE_GUARD) {
             violated("an action() %d", (int)c->action);
         }
         return;

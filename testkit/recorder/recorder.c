@@ -19,7 +19,7 @@ typedef struct recorder_row {
 
 #define RECORDER_SCOPE_AXIS 1u
 #define RECORDER_SCOPE_SYSTEM 0u
-#define RECORDER_ROW(id, path, scope, type, access, range, unit) \
+#define RECORDER_ROW(id, path, scope, type, access, range, unit, can) \
     {path, RECORDER_SCOPE_##scope, DARAN_TYPE_##type},
 static const recorder_row_t recorder_rows[DARAN_PROP_COUNT] = {
     DARAN_PROPERTY_LIST(RECORDER_ROW)
@@ -156,7 +156,9 @@ static daran_result_t store_action(daran_recorder_t *rec, daran_action_t action)
     daran_value_t *p = rec->store;
     switch (action) {
     case DARAN_ACTION_ESTOP:
-        p[DARAN_PROP_AXIS_ERROR].u32 |= DARAN_FLAG_ESTOP;
+    case DARAN_ACTION_NODE_GUARD:
+        p[DARAN_PROP_AXIS_ERROR].u32 |= action == DARAN_ACTION_ESTOP ? DARAN_FLAG_ESTOP
+                                                                     : DARAN_FLAG_WATCHDOG;
         p[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_IDLE;
         p[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_IDLE;
         break;
@@ -439,6 +441,7 @@ const char *daran_recorder_action_name(daran_action_t action)
         [DARAN_ACTION_SET_ZERO] = "SET_ZERO",
         [DARAN_ACTION_ESTOP] = "ESTOP",
         [DARAN_ACTION_FEED_WATCHDOG] = "FEED_WATCHDOG",
+        [DARAN_ACTION_NODE_GUARD] = "NODE_GUARD",
     };
     return (unsigned)action < sizeof names / sizeof names[0] ? names[action] : "?";
 }

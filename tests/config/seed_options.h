@@ -6,7 +6,7 @@
  *
  * It compiles out what the seed document does not have: discovery (`h id
  * properties`), telemetry, the port's own commands and S-curve planning of
- * `mq` (which then never reads traj_mode). `h`, `ms`/`m*` and every other
+ * `mq` (which then never reads traj_mode), and the CAN front end. `h`, `ms`/`m*` and every other
  * command of the seed's command table stay.
  *
  * It keeps 57 property rows and leaves the other 108 vendor rows out:
@@ -34,6 +34,7 @@
 #define DARAN_ENABLE_TELEMETRY 0
 #define DARAN_ENABLE_PORT_COMMANDS 0
 #define DARAN_ENABLE_S_CURVE 0
+#define DARAN_ENABLE_CAN 0
 
 /* Every vendor row the seed's protocol does not name (108 of 165). */
 #define DARAN_OMIT_PROPERTIES(X) \

@@ -16,7 +16,7 @@ typedef struct prop_rule {
     daran_range_t range;
 } prop_rule_t;
 
-#define FUZZ_RULE_(id, path, scope, type, access, range, unit) \
+#define FUZZ_RULE_(id, path, scope, type, access, range, unit, can) \
     {DARAN_TYPE_##type, FUZZ_ACCESS_##access, DARAN_RANGE_##range},
 #define FUZZ_ACCESS_RO false
 #define FUZZ_ACCESS_RW true

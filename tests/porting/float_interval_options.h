@@ -10,8 +10,8 @@
     X(WIDE,          "-1e3..0.1")
 
 #define DARAN_PORT_PROPERTY_LIST(X) \
-    X(FAN_DUTY,   "fan.duty",   AXIS,   F32, RW, UNIT_INTERVAL, "") \
-    X(TRIM,       "trim",       SYSTEM, F32, RW, SYMMETRIC,     "deg") \
-    X(WIDE_VALUE, "wide_value", SYSTEM, F32, RW, WIDE,          "") 
+    X(FAN_DUTY,   "fan.duty",   AXIS,   F32, RW, UNIT_INTERVAL, "", 0) \
+    X(TRIM,       "trim",       SYSTEM, F32, RW, SYMMETRIC,     "deg", 0) \
+    X(WIDE_VALUE, "wide_value", SYSTEM, F32, RW, WIDE,          "", 0) 
 
 #endif /* FLOAT_INTERVAL_OPTIONS_H */

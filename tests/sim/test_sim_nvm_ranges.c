@@ -30,7 +30,7 @@ static const struct {
     bool axis;
     daran_prop_type_t type;
 } rows[] = {
-#define ROW_(id, path, scope, type, access, range, unit) \
+#define ROW_(id, path, scope, type, access, range, unit, can) \
     {path, DARAN_SCOPE_IS_AXIS_##scope, DARAN_TYPE_##type},
 #define DARAN_SCOPE_IS_AXIS_AXIS true
 #define DARAN_SCOPE_IS_AXIS_SYSTEM false

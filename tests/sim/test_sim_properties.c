@@ -20,13 +20,13 @@ static daran_sim_drive_t drive;
 static daran_sim_model_t *const m = &drive.model;
 
 static const daran_prop_type_t prop_type[DARAN_PROP_COUNT] = {
-#define TYPE_(id, path, scope, type, access, range, unit) DARAN_TYPE_##type,
+#define TYPE_(id, path, scope, type, access, range, unit, can) DARAN_TYPE_##type,
     DARAN_PROPERTY_LIST(TYPE_)
 #undef TYPE_
 };
 
 static const daran_range_t prop_range[DARAN_PROP_COUNT] = {
-#define RANGE_(id, path, scope, type, access, range, unit) DARAN_RANGE_##range,
+#define RANGE_(id, path, scope, type, access, range, unit, can) DARAN_RANGE_##range,
     DARAN_PROPERTY_LIST(RANGE_)
 #undef RANGE_
 };
@@ -34,13 +34,13 @@ static const daran_range_t prop_range[DARAN_PROP_COUNT] = {
 #define RW_1 1
 #define RO_1 0
 static const int prop_rw[DARAN_PROP_COUNT] = {
-#define RW_(id, path, scope, type, access, range, unit) access##_1,
+#define RW_(id, path, scope, type, access, range, unit, can) access##_1,
     DARAN_PROPERTY_LIST(RW_)
 #undef RW_
 };
 
 static const char *const prop_path[DARAN_PROP_COUNT] = {
-#define PATH_(id, path, scope, type, access, range, unit) path,
+#define PATH_(id, path, scope, type, access, range, unit, can) path,
     DARAN_PROPERTY_LIST(PATH_)
 #undef PATH_
 };

@@ -3,7 +3,10 @@
 the cortex-m4 build. Each subcommand prints what it measured and exits 1
 when the budget is exceeded.
 
-  flash   LIB SIZE LIMIT          text + data of libdaran_ascii.a
+  flash   LIB SIZE LIMIT [--except RE | --only RE]
+                                  text + data of libdaran_ascii.a, or of the
+                                  members whose name does not match / matches
+                                  RE (the CAN front end has its own budget)
   ram     OBJ NM LIMIT            sizeof(daran_drive_t), read from the size of
                                   a symbol declared as char[sizeof(daran_drive_t)]
   stack   OBJDIR LIB NM OBJDUMP LIMIT
@@ -29,13 +32,30 @@ def run(cmd):
     return subprocess.run(cmd, check=True, stdout=subprocess.PIPE, text=True).stdout
 
 
-def check_flash(lib, size_tool, limit):
+def check_flash(lib, size_tool, limit, members=None):
+    """members: None for the whole library, else ("except"|"only", regex)."""
     out = run([size_tool, "-t", lib])
-    totals = [l for l in out.splitlines() if l.rstrip().endswith("(TOTALS)")]
-    text, data, bss = (int(x) for x in totals[-1].split()[:3])
-    used = text + data
     print(out)
-    print(f"core flash (text + data): {used} bytes, budget {limit}; bss {bss}")
+    if members is None:
+        totals = [l for l in out.splitlines() if l.rstrip().endswith("(TOTALS)")]
+        text, data, bss = (int(x) for x in totals[-1].split()[:3])
+        what = "core flash (text + data)"
+    else:
+        mode, pattern = members
+        text = data = bss = 0
+        for line in out.splitlines():
+            parts = line.split()
+            if len(parts) < 6 or not parts[0].isdigit() or line.rstrip().endswith("(TOTALS)"):
+                continue
+            name = parts[5]
+            if (re.search(pattern, name) is not None) == (mode == "only"):
+                text, data, bss = text + int(parts[0]), data + int(parts[1]), bss + int(parts[2])
+        what = "flash (text + data) of the members %s /%s/" % (
+            "matching" if mode == "only" else "not matching", pattern)
+        if mode == "except":
+            what = "core flash (text + data), without the members matching /%s/" % pattern
+    used = text + data
+    print(f"{what}: {used} bytes, budget {limit}; bss {bss}")
     if used > limit:
         print(f"OVER BUDGET by {used - limit} bytes")
         return 1
@@ -210,7 +230,10 @@ def main(argv):
         return 2
     cmd, args = argv[1], argv[2:]
     if cmd == "flash":
-        return check_flash(args[0], args[1], int(args[2]))
+        members = None
+        if len(args) >= 5 and args[3] in ("--except", "--only"):
+            members = (args[3][2:], args[4])
+        return check_flash(args[0], args[1], int(args[2]), members)
     if cmd == "ram":
         return check_ram(args[0], args[1], int(args[2]))
     if cmd == "stack":

@@ -166,9 +166,11 @@ static daran_result_t mock_store_action(void *ctx, daran_action_t action)
     daran_value_t *p = m->props;
     switch (action) {
     case DARAN_ACTION_ESTOP:
+    case DARAN_ACTION_NODE_GUARD:
         p[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_IDLE;
         p[DARAN_PROP_REQUESTED_STATE].u32 = DARAN_STATE_IDLE;
-        p[DARAN_PROP_AXIS_ERROR].u32 |= DARAN_FLAG_ESTOP;
+        p[DARAN_PROP_AXIS_ERROR].u32 |=
+            action == DARAN_ACTION_ESTOP ? DARAN_FLAG_ESTOP : DARAN_FLAG_WATCHDOG;
         break;
     case DARAN_ACTION_CLEAR_ERRORS:
         /* spec 10.4: sc clears every error register and the warnings */

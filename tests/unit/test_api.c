@@ -144,7 +144,7 @@ typedef struct sorted_row {
 } sorted_row_t;
 
 static const sorted_row_t sorted_rows[] = {
-#define ROW(id, path, scope, type, access, range, unit) {SCOPE_##scope, path},
+#define ROW(id, path, scope, type, access, range, unit, can) {SCOPE_##scope, path},
     DARAN_PROPERTY_LIST(ROW)
 #undef ROW
 };

@@ -31,7 +31,7 @@ typedef struct prop_row {
 
 #define SCOPE_SYSTEM 0
 #define SCOPE_AXIS 1
-#define ROW(id, path, scope, type, access, range, unit) \
+#define ROW(id, path, scope, type, access, range, unit, can) \
     {path, SCOPE_##scope, DARAN_TYPE_##type, DARAN_ACCESS_IS_##access, DARAN_RANGE_##range, unit},
 #define DARAN_ACCESS_IS_RO 0
 #define DARAN_ACCESS_IS_RW 1

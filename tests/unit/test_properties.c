@@ -34,7 +34,7 @@ typedef struct prop_row {
 } prop_row_t;
 
 static const prop_row_t rows[] = {
-#define ROW(id, path, scope, type, access, range, unit)                                         \
+#define ROW(id, path, scope, type, access, range, unit, can)                                         \
     {DARAN_PROP_##id, path, SCOPE_##scope, DARAN_TYPE_##type, ACCESS_##access, DARAN_RANGE_##range, \
      #id},
     DARAN_PROPERTY_LIST(ROW)

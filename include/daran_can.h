@@ -1,0 +1,119 @@
+/** @file daran_can.h
+ * The vendor's CAN protocol: a second front end of a drive, over the same
+ * command layer, property table and HAL as its ASCII lines (docs/can.md).
+ *
+ * A frame (11-bit id = node << 5 | code, 8 data bytes, little-endian) is
+ * decoded into the same request an ASCII line becomes, so every range, unit,
+ * state rule and HAL call is the line's. CAN has no error reply: a frame the
+ * drive refuses has no effect and gets no answer.
+ *
+ * The port owns a daran_can_t beside its daran_drive_t, gives it a transmit
+ * function and its millisecond clock (daran_can_port_t), hands it every
+ * received frame (daran_can_receive(), from an interrupt or a polling loop)
+ * and calls daran_can_poll() from the thread that calls daran_poll(): that is
+ * where frames run, replies and status frames go out, the heartbeat is sent
+ * and the node guard watches.
+ *
+ * Threading: daran_can_receive() is the producer (one interrupt or thread),
+ * daran_can_poll() the consumer; they share a frame ring with the byte
+ * ring's discipline (acquire/release, no locks). */
+#ifndef DARAN_CAN_H
+#define DARAN_CAN_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "daran_drive.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** daran_can_frame_t.flags: a frame of these kinds is not part of the
+ * protocol and is ignored (C21). */
+#define DARAN_CAN_FRAME_REMOTE 0x01u   /**< remote (RTR) frame */
+#define DARAN_CAN_FRAME_EXTENDED 0x02u /**< 29-bit identifier */
+#define DARAN_CAN_FRAME_FD 0x04u       /**< CAN FD frame */
+
+/** One CAN frame as the port's controller gives or takes it. */
+typedef struct daran_can_frame {
+    uint32_t id;     /**< standard id 0..0x7FF (or 29 bits with DARAN_CAN_FRAME_EXTENDED) */
+    uint8_t dlc;     /**< data length 0..8; the protocol's frames have 8 */
+    uint8_t flags;   /**< DARAN_CAN_FRAME_ bits; 0 for a classic data frame */
+    uint8_t data[8]; /**< data bytes, data[0] first on the bus */
+} daran_can_frame_t;
+
+/** What the port gives the CAN front end. */
+typedef struct daran_can_port {
+    /** Queue @p frame for transmission: true when the controller took it,
+     * false when no transmit buffer is free or the controller is bus-off. */
+    bool (*send)(void *ctx, const daran_can_frame_t *frame);
+    /** Milliseconds since boot; wraps at 2^32. */
+    uint32_t (*now_ms)(void *ctx);
+    /** Optional (NULL: ignored): the system sub-codes the library does not
+     * carry out itself, 0x00 (restore initial configuration) and 0x07
+     * (firmware-update mode), with their two 16-bit data fields (C19). */
+    void (*system_hook)(void *ctx, uint32_t subcode, uint16_t data1, uint16_t data2);
+} daran_can_port_t;
+
+/** @cond INTERNAL  The members below are the library's; read none of them. */
+typedef struct daran_can_slot {
+    uint16_t id;     /* standard id: frames of another shape never reach the ring */
+    uint8_t data[8];
+} daran_can_slot_t;
+/** @endcond */
+
+/** The CAN front end of one drive. Size: sizeof(daran_can_t). */
+typedef struct daran_can {
+    /** @cond INTERNAL */
+    daran_drive_t *drive;
+    const daran_can_port_t *port;
+    void *port_ctx;
+    daran_atomic_u16_t head;    /* written by daran_can_receive() only */
+    daran_atomic_u16_t tail;    /* written by daran_can_poll() only */
+    daran_atomic_u32_t dropped; /* frames lost to a full ring; the producer's */
+    uint32_t last_frame_ms;     /* the node guard: when the last frame for this drive came */
+    uint32_t heartbeat_ms;      /* when the last heartbeat went out */
+    uint32_t unsent;            /* replies and status frames the port could not send */
+    uint8_t enabled;            /* can.config.protocol was 1 at daran_can_init() */
+    uint8_t guard_armed;        /* a frame for this drive came since boot (C16) */
+    uint8_t guard_tripped;      /* the guard stopped the drive; a frame re-arms it */
+    uint8_t reserved;
+    daran_can_slot_t slots[DARAN_CAN_RX_FRAMES];
+    /** @endcond */
+} daran_can_t;
+
+/** Bind a CAN front end to its drive (initialised with daran_init()) and
+ * its port, and reset it. Reads `can.config.protocol` once: 0 leaves the
+ * front end silent (it takes frames and drops them) until the next
+ * daran_can_init(), as a drive reads it at boot (C15).
+ * Returns DARAN_ERR_BAD_ARGUMENT when a pointer or port->send / now_ms is
+ * NULL. O(sizeof *can). */
+DARAN_NODISCARD daran_result_t daran_can_init(daran_can_t *can, daran_drive_t *drive,
+                                              const daran_can_port_t *port, void *port_ctx);
+
+/** Producer side: queue one received frame. Safe in an interrupt (one
+ * producer). Frames that are not 8-byte standard data frames are dropped
+ * here (C21). Returns false when the frame was dropped: of another shape,
+ * or the ring was full (counted by daran_can_dropped()). O(1). */
+bool daran_can_receive(daran_can_t *can, const daran_can_frame_t *frame);
+
+/** Consumer side: run every queued frame (replies go out through
+ * port->send), then the node guard and the heartbeat. Call it once per
+ * control tick, from the thread that calls daran_poll(). Returns the
+ * number of frames taken. Never blocks. */
+size_t daran_can_poll(daran_can_t *can);
+
+/** Frames lost to a full receive ring since daran_can_init() (wraps). */
+uint32_t daran_can_dropped(const daran_can_t *can);
+
+/** Replies, status frames and heartbeats the port could not send since
+ * daran_can_init() (wraps). */
+uint32_t daran_can_unsent(const daran_can_t *can);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DARAN_CAN_H */

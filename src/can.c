@@ -1,0 +1,467 @@
+/* The CAN front end: a frame for this drive -> the same requests an ASCII
+ * line becomes (handlers.h) -> the HAL, and the frames the drive sends:
+ * read replies, status frames, heartbeats (docs/can.md; the decisions C1..C30
+ * of the contract are cited where they decide). A frame is decoded and
+ * checked whole before any request runs, and a refused frame has no effect:
+ * CAN has no error reply, so the refusal is silence. */
+#include <string.h>
+
+#include "can.h"
+#include "can_ring.h"
+#include "hal.h"
+#include "handlers.h"
+
+#if DARAN_ENABLE_CAN
+
+/* ---- field encodings (little-endian; s16 x 100 for the scaled fields) ---- */
+
+static uint16_t get_u16(const uint8_t *bytes)
+{
+    return (uint16_t)(bytes[0] | (unsigned)bytes[1] << 8);
+}
+
+static uint32_t get_u32(const uint8_t *bytes)
+{
+    return (uint32_t)bytes[0] | (uint32_t)bytes[1] << 8 | (uint32_t)bytes[2] << 16 |
+           (uint32_t)bytes[3] << 24;
+}
+
+static float get_f32(const uint8_t *bytes)
+{
+    uint32_t bits = get_u32(bytes);
+    float value;
+    memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+/* A scaled field: raw / 100, correctly rounded (C3). */
+static float get_scaled(const uint8_t *bytes)
+{
+    return (float)(int16_t)get_u16(bytes) / 100.0f;
+}
+
+static void put_u16(uint8_t *bytes, uint32_t value)
+{
+    bytes[0] = (uint8_t)value;
+    bytes[1] = (uint8_t)(value >> 8);
+}
+
+static void put_u32(uint8_t *bytes, uint32_t value)
+{
+    put_u16(bytes, value);
+    put_u16(bytes + 2, value >> 16);
+}
+
+/* value x 100 rounded to the nearest (ties away from zero), saturated to
+ * the s16 range: a status frame's velocity and torque (2.7). */
+static void put_scaled(uint8_t *bytes, float value)
+{
+    float scaled = value * 100.0f;
+    if (!(scaled >= -32768.0f)) {
+        scaled = -32768.0f; /* and NaN */
+    }
+    if (scaled > 32767.0f) {
+        scaled = 32767.0f;
+    }
+    put_u16(bytes, (uint32_t)(int32_t)(scaled + (scaled < 0.0f ? -0.5f : 0.5f)));
+}
+
+/* ---- what the drive sends ---- */
+
+static void send(daran_can_t *can, uint32_t id, const uint8_t *data)
+{
+    daran_can_frame_t frame;
+    frame.id = id;
+    frame.dlc = 8;
+    frame.flags = 0;
+    memcpy(frame.data, data, sizeof frame.data);
+    if (!can->port->send(can->port_ctx, &frame)) {
+        can->unsent++;
+    }
+}
+
+/* A value the status frame reads; a row the port left out reads 0. */
+static daran_value_t read_or_zero(daran_drive_t *drive, daran_prop_t prop)
+{
+    daran_value_t value;
+    if (daran_get(drive, prop, &value) != DARAN_OK) {
+        value.u64 = 0;
+    }
+    return value;
+}
+
+/* The status frame (2.7): position, velocity and torque, with T (the
+ * trajectory is done) and E (axis0.error is not 0) in the id's code. */
+static void send_status(daran_can_t *can, uint32_t node)
+{
+    static const daran_prop_t reads[] = {DARAN_PROP_POS_ESTIMATE, DARAN_PROP_VEL_ESTIMATE,
+                                         DARAN_PROP_TORQUE_ESTIMATE, DARAN_PROP_TRAJECTORY_DONE,
+                                         DARAN_PROP_AXIS_ERROR};
+    daran_value_t values[sizeof reads / sizeof reads[0]];
+    for (size_t i = 0; i < sizeof reads / sizeof reads[0]; i++) {
+        values[i] = read_or_zero(can->drive, reads[i]);
+    }
+    uint8_t data[8];
+    put_u32(data, values[0].u32);
+    put_scaled(data + 4, values[1].f32);
+    put_scaled(data + 6, values[2].f32);
+    uint32_t code = DARAN_CAN_STATUS | (values[3].u32 != 0u ? 2u : 0u) | (values[4].u32 != 0u ? 4u : 0u);
+    send(can, node << 5 | code, data);
+}
+
+/* The automatic status reply of a motion or preset frame that passed its
+ * value checks, when the drive is set to give one (2.8, C10). */
+static void reply_state(daran_can_t *can, uint32_t node)
+{
+    if (read_or_zero(can->drive, DARAN_PROP_ENABLE_REPLY_STATE).u32 != 0u) {
+        send_status(can, node);
+    }
+}
+
+/* ---- the frames for this drive ---- */
+
+/* The mode of a velocity (else torque) field, raw or x 100 (C1): the mode
+ * as the ASCII line writes it, or 0 for none of them. */
+static float mode_of(uint32_t raw, bool torque)
+{
+    if (raw >= 100u && raw % 100u == 0u) {
+        raw /= 100u;
+    }
+    if (raw == 1u) {
+        return 1.0f;
+    }
+    if (raw == 2u) {
+        return torque ? 6.0f : 2.0f; /* c's mode 2 is the torque ramp, 6 */
+    }
+    return raw == 6u && torque ? 6.0f : 0.0f;
+}
+
+/* A value the motion checks refused, as opposed to the drive's state: the
+ * frame then gets no status reply (C10, C27). */
+static bool value_refused(daran_result_t result)
+{
+    return result == DARAN_ERR_INVALID_VALUE || result == DARAN_ERR_OUT_OF_RANGE ||
+           result == DARAN_ERR_INVALID_MODE;
+}
+
+/* 0x019..0x01D: t q p v c with every value given (2.1). */
+static void direct_motion(daran_can_t *can, uint32_t node, uint32_t code, const uint8_t *data)
+{
+    static const uint8_t shape_of[] = {DARAN_SHAPE_FILTERED, DARAN_SHAPE_TRAPEZOID,
+                                       DARAN_SHAPE_PASSTHROUGH, DARAN_SHAPE_VELOCITY,
+                                       DARAN_SHAPE_TORQUE};
+    daran_shape_t shape = (daran_shape_t)shape_of[code - DARAN_CAN_TRACK];
+    float values[3] = {get_f32(data), get_scaled(data + 4), get_scaled(data + 6)};
+    if (shape >= DARAN_SHAPE_VELOCITY) {
+        values[2] = mode_of(get_u16(data + 6), shape == DARAN_SHAPE_TORQUE);
+    }
+    daran_result_t result = daran_is_finite(values[0]) ? daran_shape_check(shape, values, 3)
+                                                       : DARAN_ERR_INVALID_VALUE;
+    if (result == DARAN_OK) {
+        result = daran_run_motion(can->drive, shape, values, 3);
+    }
+    if (!value_refused(result)) {
+        reply_state(can, node);
+    }
+}
+
+/* 0x00C: the preset, its third field kept as raw / 100 for the start to
+ * read (C1); it moves nothing (2.4). */
+static void preset(daran_can_t *can, uint32_t node, const uint8_t *data)
+{
+#if DARAN_ENABLE_MULTI_MOTOR
+    const float values[DARAN_PRESET_VALUES] = {get_f32(data), get_scaled(data + 4),
+                                               get_scaled(data + 6)};
+    if (!daran_is_finite(values[0])) {
+        return;
+    }
+    daran_store_preset(can->drive, values, DARAN_PRESET_FROM_CAN);
+    reply_state(can, node);
+#else
+    (void)can;
+    (void)node;
+    (void)data;
+#endif
+}
+
+/* Sub-codes 0x10..0x15: a start of the preset (2.4). A start the drive
+ * refuses is ignored and keeps the preset (C23, C29). */
+static void start(daran_can_t *can, uint32_t subcode, const uint8_t *data, bool broadcast)
+{
+#if DARAN_ENABLE_MULTI_MOTOR
+    daran_drive_t *drive = can->drive;
+    uint32_t first = get_u16(data + 4);
+    if (subcode == DARAN_CAN_SUB_START_IMPEDANCE) {
+        (void)daran_start_impedance(drive, get_scaled(data + 4), get_scaled(data + 6), broadcast);
+        return;
+    }
+    static const uint8_t shape_of[] = {DARAN_SHAPE_FILTERED, DARAN_SHAPE_TRAPEZOID,
+                                       DARAN_SHAPE_PASSTHROUGH, DARAN_SHAPE_VELOCITY,
+                                       DARAN_SHAPE_TORQUE};
+    daran_shape_t shape = (daran_shape_t)shape_of[subcode - DARAN_CAN_SUB_START_TRACK];
+    float values[DARAN_PRESET_VALUES];
+    memcpy(values, drive->preset, sizeof values);
+    bool rel = false;
+    if (shape >= DARAN_SHAPE_VELOCITY) {
+        /* The mode in p3: raw / 100 of a CAN preset, the mode itself of an
+         * ASCII one; x 100, both are what mode_of() reads (C1). */
+        float p3 = values[2];
+        if (!(p3 >= 0.0f && p3 <= 10.0f)) {
+            return;
+        }
+        values[2] = mode_of((uint32_t)(p3 * 100.0f + 0.5f), shape == DARAN_SHAPE_TORQUE);
+        if (values[2] == 0.0f) {
+            return;
+        }    } else if (first == 1u || first == 100u) {
+        rel = true; /* relative to the position setpoint (C2) */
+    } else if (first != 0u) {
+        return;
+    }
+    (void)daran_start_preset(drive, shape, values, rel, broadcast);
+#else
+    (void)can;
+    (void)subcode;
+    (void)data;
+    (void)broadcast;
+#endif
+}
+
+/* 0x008 (2.3). None of them is answered. */
+static void system_command(daran_can_t *can, const uint8_t *data, bool broadcast)
+{
+    static const uint8_t action_of[] = {
+        DARAN_ACTION_SAVE_CONFIG, DARAN_ACTION_ERASE_CONFIG, DARAN_ACTION_REBOOT,
+        DARAN_ACTION_CLEAR_ERRORS, DARAN_ACTION_SET_ZERO, DARAN_ACTION_ESTOP};
+    uint32_t subcode = get_u32(data);
+    if (subcode >= DARAN_CAN_SUB_SAVE && subcode <= DARAN_CAN_SUB_ESTOP) {
+        (void)daran_run_action(can->drive,
+                               (daran_action_t)action_of[subcode - DARAN_CAN_SUB_SAVE]);
+    } else if (subcode >= DARAN_CAN_SUB_START_TRACK && subcode <= DARAN_CAN_SUB_START_IMPEDANCE) {
+        start(can, subcode, data, broadcast);
+    } else if ((subcode == DARAN_CAN_SUB_RESTORE || subcode == DARAN_CAN_SUB_FIRMWARE) &&
+               can->port->system_hook != NULL) {
+        can->port->system_hook(can->port_ctx, subcode, get_u16(data + 4), get_u16(data + 6));
+    }
+    /* 0x20 feeds the watchdogs, as every frame for the drive already has
+     * (C18, C19); any other sub-code is ignored (C23). */
+}
+
+/* 0x01E (2.6, 2.7): a property's value, or the status frame for address 0. */
+static void read_property(daran_can_t *can, uint32_t node, const uint8_t *data)
+{
+    uint16_t address = get_u16(data);
+    if (address == 0u) {
+        send_status(can, node);
+        return;
+    }
+    daran_prop_t prop;
+    daran_value_t value;
+    if (!daran_can_property_at(address, &prop) || daran_get(can->drive, prop, &value) != DARAN_OK) {
+        return; /* no such address here (C24), or the HAL could not read it */
+    }
+    uint8_t reply[8];
+    put_u16(reply, address);
+    put_u16(reply + 2, daran_can_type_of(prop));
+    put_u32(reply + 4, value.u32);
+    send(can, node << 5 | DARAN_CAN_READ, reply);
+}
+
+/* A write's value, decoded by the frame's type code and converted exactly
+ * to the property's type (C6, C25): false when it does not fit. */
+static bool write_value(daran_prop_type_t type, uint32_t code, const uint8_t *data,
+                        daran_value_t *value)
+{
+    uint32_t bits = get_u32(data);
+    bool negative = false;
+    uint32_t magnitude = bits;
+    if (code == DARAN_CAN_TYPE_F32) {
+        float given = get_f32(data);
+        if (type == DARAN_TYPE_F32) {
+            value->f32 = given;
+            return daran_is_finite(given);
+        }
+        /* an integral float for an integer row, as ASCII takes `5.0` */
+        negative = given < 0.0f;
+        float size = negative ? -given : given;
+        if (!(size < 4294967296.0f)) {
+            return false; /* and NaN */
+        }
+        magnitude = (uint32_t)size;
+        if ((float)magnitude != size) {
+            return false;
+        }
+    } else if (code == DARAN_CAN_TYPE_U16) {
+        magnitude = bits & 0xFFFFu;
+    } else if (code == DARAN_CAN_TYPE_S16 || code == DARAN_CAN_TYPE_S32) {
+        int32_t signed_value = code == DARAN_CAN_TYPE_S16 ? (int16_t)(uint16_t)bits : (int32_t)bits;
+        negative = signed_value < 0;
+        magnitude = negative ? 0u - (uint32_t)signed_value : (uint32_t)signed_value;
+    } else if (code != DARAN_CAN_TYPE_U32) {
+        return false;
+    }
+    if (type == DARAN_TYPE_F32) {
+        value->f32 = negative ? -(float)magnitude : (float)magnitude; /* the nearest float32 */
+        return true;
+    }
+    if (type == DARAN_TYPE_S32) {
+        if (magnitude > (negative ? 0x80000000u : 0x7FFFFFFFu)) {
+            return false;
+        }
+        value->u32 = negative ? 0u - magnitude : magnitude; /* two's complement, as s32 reads it */
+        return true;
+    }
+    value->u32 = magnitude;
+    return !negative || magnitude == 0u;
+}
+
+/* 0x01F (2.6): checked as ASCII `w` checks it; never answered. */
+static void write_property(daran_can_t *can, const uint8_t *data)
+{
+    daran_prop_t prop;
+    if (!daran_can_property_at(get_u16(data), &prop)) {
+        return; /* C24 */
+    }
+    daran_property_t row = daran_property_row(prop);
+    daran_value_t value;
+    value.u64 = 0;
+    if (DARAN_PROPERTY_ACCESS(row) != DARAN_ACCESS_RW ||
+        !write_value(DARAN_PROPERTY_TYPE(row), get_u16(data + 2), data + 4, &value) ||
+        daran_check_property_value(prop, value) != DARAN_OK) {
+        return; /* C25, C26, C27 */
+    }
+    (void)daran_commit_property(can->drive, prop, value);
+}
+
+/* A command code of the protocol (2.1); every other one is ignored (C22). */
+static bool known_code(uint32_t code)
+{
+    return code == DARAN_CAN_SYSTEM || code == DARAN_CAN_PRESET ||
+           (code >= DARAN_CAN_TRACK && code <= DARAN_CAN_WRITE);
+}
+
+/* Another node claims this drive's id: can.error bit 0 (C22). The core
+ * writes that bit itself; it is the one non-zero value it ever gives an
+ * error register (docs/porting.md). */
+static void duplicate_id(daran_drive_t *drive)
+{
+    daran_value_t errors;
+    if (daran_get(drive, DARAN_PROP_CAN_ERROR, &errors) == DARAN_OK && (errors.u32 & 1u) == 0u) {
+        errors.u32 |= 1u;
+        (void)daran_set(drive, DARAN_PROP_CAN_ERROR, errors);
+    }
+}
+
+static void run_frame(daran_can_t *can, const daran_can_slot_t *frame, uint32_t now)
+{
+    daran_drive_t *drive = can->drive;
+    uint32_t node = (uint32_t)frame->id >> 5;
+    uint32_t code = frame->id & 0x1Fu;
+    daran_value_t own;
+    if (daran_get(drive, DARAN_PROP_CAN_NODE_ID, &own) != DARAN_OK) {
+        return;
+    }
+    if ((code & DARAN_CAN_STATUS) != 0u && code < 0x18u) {
+        if (node == own.u32) {
+            duplicate_id(drive); /* a status frame: never a command (C9) */
+        }
+        return;
+    }
+    if ((node != own.u32 && node != 0u) || !known_code(code)) {
+        return; /* C28, C22 */
+    }
+    /* Every well-formed frame for the drive feeds the node guard and the
+     * axis watchdog, whatever its content (C18). */
+    can->last_frame_ms = now;
+    can->guard_armed = 1;
+    can->guard_tripped = 0;
+    (void)daran_act(drive, DARAN_ACTION_FEED_WATCHDOG);
+
+    const uint8_t *data = frame->data;
+    bool broadcast = node == 0u;
+    switch (code) {
+    case DARAN_CAN_SYSTEM:
+        system_command(can, data, broadcast);
+        break;
+    case DARAN_CAN_PRESET:
+        preset(can, own.u32, data);
+        break;
+    case DARAN_CAN_READ:
+        read_property(can, own.u32, data);
+        break;
+    case DARAN_CAN_WRITE:
+        write_property(can, data);
+        break;
+    default:
+        direct_motion(can, own.u32, code, data);
+        break;
+    }
+}
+
+/* ---- the front end ---- */
+
+daran_result_t daran_can_init(daran_can_t *can, daran_drive_t *drive, const daran_can_port_t *port,
+                              void *port_ctx)
+{
+    if (can == NULL || drive == NULL || port == NULL || port->send == NULL ||
+        port->now_ms == NULL) {
+        return DARAN_ERR_BAD_ARGUMENT;
+    }
+    unsigned char *raw = (unsigned char *)can;
+    for (size_t i = 0; i < sizeof *can; i++) {
+        raw[i] = 0;
+    }
+    can->drive = drive;
+    can->port = port;
+    can->port_ctx = port_ctx;
+    daran_value_t protocol;
+    /* read once, as a drive reads it at boot (C15); a port without the row
+     * speaks the protocol */
+    daran_result_t result = daran_get(drive, DARAN_PROP_CAN_PROTOCOL, &protocol);
+    can->enabled = result != DARAN_OK || protocol.u32 == 1u;
+    can->heartbeat_ms = port->now_ms(port_ctx);
+    return DARAN_OK;
+}
+
+/* The node guard (C16) and the heartbeat (2.9, C17), once per poll. */
+static void keep_time(daran_can_t *can, uint32_t now)
+{
+    daran_drive_t *drive = can->drive;
+    daran_value_t limit;
+    if (can->guard_armed && !can->guard_tripped &&
+        daran_get(drive, DARAN_PROP_CAN_TIMEOUT_MS, &limit) == DARAN_OK && limit.u32 != 0u &&
+        now - can->last_frame_ms >= limit.u32) {
+        can->guard_tripped = 1;
+        (void)daran_act(drive, DARAN_ACTION_NODE_GUARD);
+    }
+    daran_value_t period;
+    daran_value_t own;
+    if (daran_get(drive, DARAN_PROP_CAN_HEARTBEAT_MS, &period) == DARAN_OK && period.u32 != 0u &&
+        now - can->heartbeat_ms >= period.u32 &&
+        daran_get(drive, DARAN_PROP_CAN_NODE_ID, &own) == DARAN_OK) {
+        can->heartbeat_ms = now;
+        send_status(can, own.u32);
+    }
+}
+
+size_t daran_can_poll(daran_can_t *can)
+{
+    uint32_t now = can->port->now_ms(can->port_ctx);
+    size_t queued = daran_can_queued(can);
+    for (size_t i = 0; i < queued; i++) {
+        if (can->enabled) {
+            run_frame(can, daran_can_oldest(can), now);
+        }
+        daran_can_release(can);
+    }
+    if (can->enabled) {
+        keep_time(can, now);
+    }
+    return queued;
+}
+
+uint32_t daran_can_unsent(const daran_can_t *can)
+{
+    return can->unsent;
+}
+
+#endif /* DARAN_ENABLE_CAN */
