@@ -64,10 +64,13 @@ typedef struct daran_can_slot {
 } daran_can_slot_t;
 /** @endcond */
 
+struct daran_can_bridge;
+
 /** The CAN front end of one drive. Size: sizeof(daran_can_t). */
 typedef struct daran_can {
     /** @cond INTERNAL */
     daran_drive_t *drive;
+    struct daran_can_bridge *bridge; /* the drive's bridge, NULL without one */
     const daran_can_port_t *port;
     void *port_ctx;
     daran_atomic_u16_t head;    /* written by daran_can_receive() only */
@@ -111,6 +114,51 @@ uint32_t daran_can_dropped(const daran_can_t *can);
 /** Replies, status frames and heartbeats the port could not send since
  * daran_can_init() (wraps). */
 uint32_t daran_can_unsent(const daran_can_t *can);
+
+/** The most property reads one bridged line waits for (`e`: seven). */
+#define DARAN_CAN_BRIDGE_READS 7u
+
+/** @cond INTERNAL */
+typedef struct daran_can_bridge_read {
+    uint16_t address; /* asked for */
+    uint8_t type;     /* the reply's type code */
+    uint8_t done;     /* the reply came */
+    uint32_t bits;    /* the reply's value */
+} daran_can_bridge_read_t;
+/** @endcond */
+
+/** A drive's gateway: lines for other ids become frames (docs/can.md, "The
+ * bridge"). Size: sizeof(daran_can_bridge_t). */
+typedef struct daran_can_bridge {
+    /** @cond INTERNAL */
+    daran_can_t *can;
+    uint32_t asked_ms;          /* when the read now awaited was sent */
+    uint8_t node;               /* the drive the pending query is for */
+    uint8_t kind;               /* what the answer prints (can_bridge.c) */
+    uint8_t count;              /* reads of the pending query, 0 when none */
+    uint8_t next;               /* the read awaited */
+    uint8_t wants_checksum;     /* the line carried one: so does its answer */
+    uint8_t given;              /* a motion line's values, or a start's relative flag */
+    uint8_t reserved[2];
+    float values[5];            /* a motion line's values (`d` has five), parsed here, not on
+                                   the stack; `q` with omitted values sends them after its reads */
+    daran_can_bridge_read_t reads[DARAN_CAN_BRIDGE_READS];
+    /** @endcond */
+} daran_can_bridge_t;
+
+/** Make @p can's drive a gateway (with `can.config.protocol` 1, C31): a line
+ * addressed to another id 1..63 is checked like a line for this drive, sent
+ * as the frames of the contract's section 5.2 and, for a query, answered
+ * with the remote drive's values once they came; daran_poll() reads no
+ * further line meanwhile (the bytes wait in the receive ring), and the
+ * replies arrive through daran_can_poll(). A broadcast line that is not a
+ * read goes out as node-0 frames, then runs here (C34). Lines for other ids
+ * no longer reach the forward hook. Returns DARAN_ERR_BAD_ARGUMENT for a
+ * NULL pointer or a front end without a drive. O(1). */
+DARAN_NODISCARD daran_result_t daran_can_bridge_init(daran_can_bridge_t *bridge, daran_can_t *can);
+
+/** Whether a bridged query is waiting for its replies. O(1). */
+bool daran_can_bridge_busy(const daran_can_bridge_t *bridge);
 
 #ifdef __cplusplus
 }

@@ -105,6 +105,19 @@
 #define DARAN_ENABLE_CAN 1
 #endif
 
+/** 1 (default with DARAN_ENABLE_CAN): a drive with a daran_can_bridge_t
+ * (daran_can.h) sends lines for other ids to them over CAN and answers
+ * their queries with the remote drive's values (docs/can.md, "The bridge").
+ * 0 compiles the bridge out. */
+#ifndef DARAN_ENABLE_CAN_BRIDGE
+#define DARAN_ENABLE_CAN_BRIDGE DARAN_ENABLE_CAN
+#endif
+
+/** How long the bridge waits for each reply of a bridged query, in ms (C32). */
+#ifndef DARAN_CAN_BRIDGE_TIMEOUT_MS
+#define DARAN_CAN_BRIDGE_TIMEOUT_MS 10
+#endif
+
 /** Received frames the CAN front end holds between daran_can_receive() and
  * daran_can_poll(): a power of two, 10 bytes of RAM each. */
 #ifndef DARAN_CAN_RX_FRAMES
@@ -156,6 +169,15 @@
 #if DARAN_CAN_RX_FRAMES < 2 || DARAN_CAN_RX_FRAMES > 256 || \
     (DARAN_CAN_RX_FRAMES & (DARAN_CAN_RX_FRAMES - 1)) != 0
 #error "DARAN_CAN_RX_FRAMES must be a power of two within 2..256"
+#endif
+#if DARAN_ENABLE_CAN_BRIDGE != 0 && DARAN_ENABLE_CAN_BRIDGE != 1
+#error "DARAN_ENABLE_CAN_BRIDGE must be 0 or 1"
+#endif
+#if DARAN_ENABLE_CAN_BRIDGE && !DARAN_ENABLE_CAN
+#error "DARAN_ENABLE_CAN_BRIDGE needs DARAN_ENABLE_CAN"
+#endif
+#if DARAN_CAN_BRIDGE_TIMEOUT_MS < 1 || DARAN_CAN_BRIDGE_TIMEOUT_MS > 60000
+#error "DARAN_CAN_BRIDGE_TIMEOUT_MS must be within 1..60000"
 #endif
 #if DARAN_ENABLE_CAN && DARAN_MOTOR_ID_MAX > 63
 #error "DARAN_ENABLE_CAN needs DARAN_MOTOR_ID_MAX <= 63 (a CAN node id has 6 bits)"

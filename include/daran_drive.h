@@ -84,6 +84,7 @@ typedef struct daran_fields {
     uint8_t count; /* fields found, saturating at DARAN_FIELDS_MAX */
 } daran_fields_t;
 struct daran_port_command;
+struct daran_can_bridge;
 /** @endcond */
 
 /** One drive. Size: sizeof(daran_drive_t), known at compile time. */
@@ -96,6 +97,7 @@ typedef struct daran_drive {
     daran_forward_fn forward;
     void *forward_ctx;
     const struct daran_port_command *port_commands;
+    struct daran_can_bridge *bridge; /* a gateway's bridge (daran_can.h), NULL without one */
     void *port_ctx;
     uint32_t telemetry_next; /* tick of the next report */
     daran_rx_ring_t rx;

@@ -8,7 +8,9 @@
  * setpoint for relative moves); they must have no side effects.
  *
  * Every function returns DARAN_OK or the protocol error the drive should
- * answer with (DARAN_ERR_MOTOR_FAULT for a hardware failure). A function that
+ * answer with (DARAN_ERR_MOTOR_FAULT for a hardware failure); a result from
+ * DARAN_ERR_NO_REPLY on (the bridge's own errors, the API's) is answered
+ * `motor fault`. A function that
  * returns an error must leave the drive unchanged. All are called from the
  * thread that calls daran_poll() / daran_process_line(), never from the
  * byte-input interrupt. */

@@ -69,6 +69,9 @@ extern "C" {
     X(ERR_ESTOP_ACTIVE,          "estop active") \
     X(ERR_MOTOR_FAULT,           "motor fault") \
     X(ERR_MOTOR_IDLE,            "motor idle") \
+    X(ERR_NO_REPLY,              "no reply") /* a bridged query's drive did not answer (C32) */ \
+    X(ERR_BUS_ERROR,             "bus error") /* the CAN port could not send (C33) */ \
+    X(ERR_NOT_BRIDGED,           "not bridged") /* a line for another id with no CAN form (C35) */ \
     X(ERR_BAD_ARGUMENT,          "bad argument") \
     X(ERR_BUILD_MISMATCH,        "build mismatch")
 

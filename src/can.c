@@ -6,65 +6,14 @@
  * CAN has no error reply, so the refusal is silence. */
 #include <string.h>
 
+#include "bridge.h"
 #include "can.h"
+#include "can_bytes.h"
 #include "can_ring.h"
 #include "hal.h"
 #include "handlers.h"
 
 #if DARAN_ENABLE_CAN
-
-/* ---- field encodings (little-endian; s16 x 100 for the scaled fields) ---- */
-
-static uint16_t get_u16(const uint8_t *bytes)
-{
-    return (uint16_t)(bytes[0] | (unsigned)bytes[1] << 8);
-}
-
-static uint32_t get_u32(const uint8_t *bytes)
-{
-    return (uint32_t)bytes[0] | (uint32_t)bytes[1] << 8 | (uint32_t)bytes[2] << 16 |
-           (uint32_t)bytes[3] << 24;
-}
-
-static float get_f32(const uint8_t *bytes)
-{
-    uint32_t bits = get_u32(bytes);
-    float value;
-    memcpy(&value, &bits, sizeof value);
-    return value;
-}
-
-/* A scaled field: raw / 100, correctly rounded (C3). */
-static float get_scaled(const uint8_t *bytes)
-{
-    return (float)(int16_t)get_u16(bytes) / 100.0f;
-}
-
-static void put_u16(uint8_t *bytes, uint32_t value)
-{
-    bytes[0] = (uint8_t)value;
-    bytes[1] = (uint8_t)(value >> 8);
-}
-
-static void put_u32(uint8_t *bytes, uint32_t value)
-{
-    put_u16(bytes, value);
-    put_u16(bytes + 2, value >> 16);
-}
-
-/* value x 100 rounded to the nearest (ties away from zero), saturated to
- * the s16 range: a status frame's velocity and torque (2.7). */
-static void put_scaled(uint8_t *bytes, float value)
-{
-    float scaled = value * 100.0f;
-    if (!(scaled >= -32768.0f)) {
-        scaled = -32768.0f; /* and NaN */
-    }
-    if (scaled > 32767.0f) {
-        scaled = 32767.0f;
-    }
-    put_u16(bytes, (uint32_t)(int32_t)(scaled + (scaled < 0.0f ? -0.5f : 0.5f)));
-}
 
 /* ---- what the drive sends ---- */
 
@@ -102,9 +51,9 @@ static void send_status(daran_can_t *can, uint32_t node)
         values[i] = read_or_zero(can->drive, reads[i]);
     }
     uint8_t data[8];
-    put_u32(data, values[0].u32);
-    put_scaled(data + 4, values[1].f32);
-    put_scaled(data + 6, values[2].f32);
+    daran_can_put_u32(data, values[0].u32);
+    (void)daran_can_put_scaled(data + 4, values[1].f32, 1);
+    (void)daran_can_put_scaled(data + 6, values[2].f32, 1);
     uint32_t code = DARAN_CAN_STATUS | (values[3].u32 != 0u ? 2u : 0u) | (values[4].u32 != 0u ? 4u : 0u);
     send(can, node << 5 | code, data);
 }
@@ -151,9 +100,9 @@ static void direct_motion(daran_can_t *can, uint32_t node, uint32_t code, const 
                                        DARAN_SHAPE_PASSTHROUGH, DARAN_SHAPE_VELOCITY,
                                        DARAN_SHAPE_TORQUE};
     daran_shape_t shape = (daran_shape_t)shape_of[code - DARAN_CAN_TRACK];
-    float values[3] = {get_f32(data), get_scaled(data + 4), get_scaled(data + 6)};
+    float values[3] = {daran_can_get_f32(data), daran_can_get_scaled(data + 4), daran_can_get_scaled(data + 6)};
     if (shape >= DARAN_SHAPE_VELOCITY) {
-        values[2] = mode_of(get_u16(data + 6), shape == DARAN_SHAPE_TORQUE);
+        values[2] = mode_of(daran_can_get_u16(data + 6), shape == DARAN_SHAPE_TORQUE);
     }
     daran_result_t result = daran_is_finite(values[0]) ? daran_shape_check(shape, values, 3)
                                                        : DARAN_ERR_INVALID_VALUE;
@@ -170,8 +119,8 @@ static void direct_motion(daran_can_t *can, uint32_t node, uint32_t code, const 
 static void preset(daran_can_t *can, uint32_t node, const uint8_t *data)
 {
 #if DARAN_ENABLE_MULTI_MOTOR
-    const float values[DARAN_PRESET_VALUES] = {get_f32(data), get_scaled(data + 4),
-                                               get_scaled(data + 6)};
+    const float values[DARAN_PRESET_VALUES] = {daran_can_get_f32(data), daran_can_get_scaled(data + 4),
+                                               daran_can_get_scaled(data + 6)};
     if (!daran_is_finite(values[0])) {
         return;
     }
@@ -190,9 +139,9 @@ static void start(daran_can_t *can, uint32_t subcode, const uint8_t *data, bool 
 {
 #if DARAN_ENABLE_MULTI_MOTOR
     daran_drive_t *drive = can->drive;
-    uint32_t first = get_u16(data + 4);
+    uint32_t first = daran_can_get_u16(data + 4);
     if (subcode == DARAN_CAN_SUB_START_IMPEDANCE) {
-        (void)daran_start_impedance(drive, get_scaled(data + 4), get_scaled(data + 6), broadcast);
+        (void)daran_start_impedance(drive, daran_can_get_scaled(data + 4), daran_can_get_scaled(data + 6), broadcast);
         return;
     }
     static const uint8_t shape_of[] = {DARAN_SHAPE_FILTERED, DARAN_SHAPE_TRAPEZOID,
@@ -232,7 +181,7 @@ static void system_command(daran_can_t *can, const uint8_t *data, bool broadcast
     static const uint8_t action_of[] = {
         DARAN_ACTION_SAVE_CONFIG, DARAN_ACTION_ERASE_CONFIG, DARAN_ACTION_REBOOT,
         DARAN_ACTION_CLEAR_ERRORS, DARAN_ACTION_SET_ZERO, DARAN_ACTION_ESTOP};
-    uint32_t subcode = get_u32(data);
+    uint32_t subcode = daran_can_get_u32(data);
     if (subcode >= DARAN_CAN_SUB_SAVE && subcode <= DARAN_CAN_SUB_ESTOP) {
         (void)daran_run_action(can->drive,
                                (daran_action_t)action_of[subcode - DARAN_CAN_SUB_SAVE]);
@@ -240,7 +189,7 @@ static void system_command(daran_can_t *can, const uint8_t *data, bool broadcast
         start(can, subcode, data, broadcast);
     } else if ((subcode == DARAN_CAN_SUB_RESTORE || subcode == DARAN_CAN_SUB_FIRMWARE) &&
                can->port->system_hook != NULL) {
-        can->port->system_hook(can->port_ctx, subcode, get_u16(data + 4), get_u16(data + 6));
+        can->port->system_hook(can->port_ctx, subcode, daran_can_get_u16(data + 4), daran_can_get_u16(data + 6));
     }
     /* 0x20 feeds the watchdogs, as every frame for the drive already has
      * (C18, C19); any other sub-code is ignored (C23). */
@@ -249,7 +198,7 @@ static void system_command(daran_can_t *can, const uint8_t *data, bool broadcast
 /* 0x01E (2.6, 2.7): a property's value, or the status frame for address 0. */
 static void read_property(daran_can_t *can, uint32_t node, const uint8_t *data)
 {
-    uint16_t address = get_u16(data);
+    uint16_t address = daran_can_get_u16(data);
     if (address == 0u) {
         send_status(can, node);
         return;
@@ -260,9 +209,9 @@ static void read_property(daran_can_t *can, uint32_t node, const uint8_t *data)
         return; /* no such address here (C24), or the HAL could not read it */
     }
     uint8_t reply[8];
-    put_u16(reply, address);
-    put_u16(reply + 2, daran_can_type_of(prop));
-    put_u32(reply + 4, value.u32);
+    daran_can_put_u16(reply, address);
+    daran_can_put_u16(reply + 2, daran_can_type_of(prop));
+    daran_can_put_u32(reply + 4, value.u32);
     send(can, node << 5 | DARAN_CAN_READ, reply);
 }
 
@@ -271,11 +220,11 @@ static void read_property(daran_can_t *can, uint32_t node, const uint8_t *data)
 static bool write_value(daran_prop_type_t type, uint32_t code, const uint8_t *data,
                         daran_value_t *value)
 {
-    uint32_t bits = get_u32(data);
+    uint32_t bits = daran_can_get_u32(data);
     bool negative = false;
     uint32_t magnitude = bits;
     if (code == DARAN_CAN_TYPE_F32) {
-        float given = get_f32(data);
+        float given = daran_can_get_f32(data);
         if (type == DARAN_TYPE_F32) {
             value->f32 = given;
             return daran_is_finite(given);
@@ -318,14 +267,14 @@ static bool write_value(daran_prop_type_t type, uint32_t code, const uint8_t *da
 static void write_property(daran_can_t *can, const uint8_t *data)
 {
     daran_prop_t prop;
-    if (!daran_can_property_at(get_u16(data), &prop)) {
+    if (!daran_can_property_at(daran_can_get_u16(data), &prop)) {
         return; /* C24 */
     }
     daran_property_t row = daran_property_row(prop);
     daran_value_t value;
     value.u64 = 0;
     if (DARAN_PROPERTY_ACCESS(row) != DARAN_ACCESS_RW ||
-        !write_value(DARAN_PROPERTY_TYPE(row), get_u16(data + 2), data + 4, &value) ||
+        !write_value(DARAN_PROPERTY_TYPE(row), daran_can_get_u16(data + 2), data + 4, &value) ||
         daran_check_property_value(prop, value) != DARAN_OK) {
         return; /* C25, C26, C27 */
     }
@@ -366,8 +315,16 @@ static void run_frame(daran_can_t *can, const daran_can_slot_t *frame, uint32_t 
         }
         return;
     }
-    if ((node != own.u32 && node != 0u) || !known_code(code)) {
-        return; /* C28, C22 */
+    if (node != own.u32 && node != 0u) {
+#if DARAN_ENABLE_CAN_BRIDGE
+        if (can->bridge != NULL) {
+            daran_bridge_offer(can->bridge, frame); /* a reply to a bridged query? */
+        }
+#endif
+        return; /* C28 */
+    }
+    if (!known_code(code)) {
+        return; /* C22 */
     }
     /* Every well-formed frame for the drive feeds the node guard and the
      * axis watchdog, whatever its content (C18). */
@@ -455,6 +412,11 @@ size_t daran_can_poll(daran_can_t *can)
     }
     if (can->enabled) {
         keep_time(can, now);
+#if DARAN_ENABLE_CAN_BRIDGE
+        if (can->bridge != NULL) {
+            (void)daran_bridge_waiting(can->bridge); /* its timeout */
+        }
+#endif
     }
     return queued;
 }

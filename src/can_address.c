@@ -31,6 +31,24 @@ bool daran_can_property_at(uint16_t address, daran_prop_t *prop)
     return false;
 }
 
+#if DARAN_ENABLE_CAN_BRIDGE
+uint16_t daran_can_address_of(daran_prop_t prop)
+{
+#if DARAN_CAN_ROWS > 0
+    for (unsigned group = 0; group < DARAN_CAN_GROUPS; group++) {
+        for (unsigned row = can_group_first[group]; row < can_group_first[group + 1u]; row++) {
+            if (can_property[row] == (unsigned)prop) {
+                return (uint16_t)(can_group_high[group] << 8 | can_low[row]);
+            }
+        }
+    }
+#else
+    (void)prop;
+#endif
+    return 0;
+}
+#endif
+
 uint16_t daran_can_type_of(daran_prop_t prop)
 {
     switch (DARAN_PROPERTY_TYPE(daran_property_row(prop))) {

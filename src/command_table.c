@@ -135,9 +135,14 @@ static void help_line(daran_drive_t *drive, const char *word, size_t len, bool i
 
 static daran_result_t help_command(daran_drive_t *drive, const daran_request_t *request)
 {
+    return daran_help(drive, request, false);
+}
+
+daran_result_t daran_help(daran_drive_t *drive, const daran_request_t *request, bool bridged)
+{
 #if DARAN_ENABLE_DISCOVERY
     if (request->fields->count > 2u) {
-        return daran_cmd_discovery(drive, request);
+        return daran_discovery(drive, request, bridged);
     }
 #else
     (void)request;
@@ -150,7 +155,8 @@ static daran_result_t help_command(daran_drive_t *drive, const daran_request_t *
         arguments = daran_nth_text(arguments, 1);
     }
 #if DARAN_ENABLE_PORT_COMMANDS
-    for (size_t i = 0; i < drive->port_command_count; i++) {
+    /* a bridged `h` lists the commands the bridge takes: the core's alone (C35) */
+    for (size_t i = 0; !bridged && i < drive->port_command_count; i++) {
         const daran_port_command_t *command = &drive->port_commands[i];
         help_line(drive, command->word, daran_text_len(command->word), true, command->help);
     }

@@ -184,18 +184,26 @@ DARAN_NOINLINE daran_result_t daran_run_motion(daran_drive_t *drive, daran_shape
     return result != DARAN_OK ? result : daran_start_move(drive, &move);
 }
 
-daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_parse_motion(const daran_request_t *request, float *values, uint8_t *count)
 {
-    daran_shape_t shape_id = (daran_shape_t)request->command->arg;
-    const motion_shape_t *shape = &shapes[shape_id];
-    uint8_t count = (uint8_t)(request->fields->count - 2u);
-    float values[DARAN_MOTION_VALUES_MAX];
-    for (uint8_t i = 0; i < count; i++) {
+    const motion_shape_t *shape = &shapes[request->command->arg];
+    *count = (uint8_t)(request->fields->count - 2u);
+    for (uint8_t i = 0; i < *count; i++) {
         daran_field_t field = daran_field_at(request, 2u + i);
         daran_result_t result = parse_motion_value(&field, CHECK_OF(shape->value[i]), &values[i]);
         if (result != DARAN_OK) {
             return result;
         }
     }
-    return daran_run_motion(drive, shape_id, values, count);
+    return DARAN_OK;
+}
+
+daran_result_t daran_cmd_motion(daran_drive_t *drive, const daran_request_t *request)
+{
+    float values[DARAN_MOTION_VALUES_MAX];
+    uint8_t count;
+    daran_result_t result = daran_parse_motion(request, values, &count);
+    return result != DARAN_OK ? result
+                              : daran_run_motion(drive, (daran_shape_t)request->command->arg,
+                                                 values, count);
 }

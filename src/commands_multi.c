@@ -16,9 +16,8 @@
 /* One count of a CAN preset's duration field, in seconds (s16 x 100). */
 #define CAN_DURATION_STEP 0.01f
 
-daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_parse_preset(const daran_request_t *request, float *values)
 {
-    float values[DARAN_PRESET_VALUES];
     for (uint8_t i = 0; i < DARAN_PRESET_VALUES; i++) {
         daran_field_t field = daran_field_at(request, 2u + i);
         daran_result_t result = daran_field_f32(&field, &values[i]);
@@ -26,8 +25,17 @@ daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request
             return result;
         }
     }
-    daran_store_preset(drive, values, DARAN_PRESET_FROM_LINE);
     return DARAN_OK;
+}
+
+daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request)
+{
+    float values[DARAN_PRESET_VALUES];
+    daran_result_t result = daran_parse_preset(request, values);
+    if (result == DARAN_OK) {
+        daran_store_preset(drive, values, DARAN_PRESET_FROM_LINE);
+    }
+    return result;
 }
 
 void daran_store_preset(daran_drive_t *drive, const float *values, uint8_t origin)
@@ -165,18 +173,27 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, con
                       values[2] * DEG_PER_S_PER_RPM, s_curve, slack, move);
 }
 
-daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_parse_start(const daran_request_t *request, bool *rel)
 {
-    uint32_t rel = 0;
+    uint32_t flag = 0;
     if (request->fields->count == 3u) { /* mt, mq, mp: 0 absolute, 1 relative */
         daran_field_t field = daran_field_at(request, 2);
-        daran_result_t result = daran_field_mode(&field, (1u << 0) | (1u << 1), &rel);
+        daran_result_t result = daran_field_mode(&field, (1u << 0) | (1u << 1), &flag);
         if (result != DARAN_OK) {
             return result;
         }
     }
-    return daran_start_preset(drive, (daran_shape_t)request->command->arg, drive->preset, rel != 0u,
-                              request->motor == 0u);
+    *rel = flag != 0u;
+    return DARAN_OK;
+}
+
+daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *request)
+{
+    bool rel;
+    daran_result_t result = daran_parse_start(request, &rel);
+    return result != DARAN_OK ? result
+                              : daran_start_preset(drive, (daran_shape_t)request->command->arg,
+                                                   drive->preset, rel, request->motor == 0u);
 }
 
 daran_result_t daran_start_preset(daran_drive_t *drive, daran_shape_t shape, const float *values,

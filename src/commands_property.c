@@ -67,8 +67,8 @@ daran_result_t daran_check_property_value(daran_prop_t prop, daran_value_t value
 
 /* The written value's grammar, as the property's type says; its range is
  * daran_check_property_value()'s. */
-static daran_result_t parse_property_value(daran_prop_t prop, const daran_field_t *field,
-                                           daran_value_t *value)
+daran_result_t daran_parse_property_value(daran_prop_t prop, const daran_field_t *field,
+                                          daran_value_t *value)
 {
     daran_prop_type_t type = DARAN_PROPERTY_TYPE(daran_property_row(prop));
     if (type == DARAN_TYPE_F32) {
@@ -117,6 +117,6 @@ daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)
     daran_value_t value;
     value.u64 = 0;
     daran_field_t field = daran_field_at(request, 2);
-    daran_result_t result = parse_property_value(request->prop, &field, &value);
+    daran_result_t result = daran_parse_property_value(request->prop, &field, &value);
     return result == DARAN_OK ? daran_commit_property(drive, request->prop, value) : result;
 }

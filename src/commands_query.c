@@ -6,21 +6,14 @@
 #include "property.h"
 #include "reply.h"
 
-daran_result_t daran_append_properties(daran_drive_t *drive, const daran_prop_t *props,
-                                       size_t count)
+void daran_append_values(daran_drive_t *drive, const daran_value_t *values,
+                         const uint8_t *types, size_t count)
 {
-    daran_value_t values[DARAN_APPEND_MAX];
-    for (size_t i = 0; i < count; i++) {
-        daran_result_t result = daran_get(drive, props[i], &values[i]);
-        if (result != DARAN_OK) {
-            return result;
-        }
-    }
     for (size_t i = 0; i < count; i++) {
         if (drive->reply_len > 0u) {
             daran_reply_space(drive);
         }
-        switch (DARAN_PROPERTY_TYPE(daran_property_row(props[i]))) {
+        switch ((daran_prop_type_t)types[i]) {
         case DARAN_TYPE_F32:
             daran_reply_f32(drive, values[i].f32);
             break;
@@ -40,6 +33,21 @@ daran_result_t daran_append_properties(daran_drive_t *drive, const daran_prop_t 
             break;
         }
     }
+}
+
+daran_result_t daran_append_properties(daran_drive_t *drive, const daran_prop_t *props,
+                                       size_t count)
+{
+    daran_value_t values[DARAN_APPEND_MAX];
+    uint8_t types[DARAN_APPEND_MAX];
+    for (size_t i = 0; i < count; i++) {
+        daran_result_t result = daran_get(drive, props[i], &values[i]);
+        if (result != DARAN_OK) {
+            return result;
+        }
+        types[i] = (uint8_t)DARAN_PROPERTY_TYPE(daran_property_row(props[i]));
+    }
+    daran_append_values(drive, values, types, count);
     return DARAN_OK;
 }
 
@@ -84,6 +92,7 @@ static const daran_prop_t error_registers[] = {
     DARAN_PROP_CAN_ERROR,
 };
 #define ERROR_REGISTER_COUNT (sizeof error_registers / sizeof error_registers[0])
+DARAN_STATIC_ASSERT(ERROR_REGISTER_COUNT == DARAN_ERROR_REGISTERS, e_has_seven_lines);
 
 /* The bit of axis0.error that summarises each register after the first
  * (daran_hal.h): DARAN_FLAG_MOTOR_FAILED, _ENCODER_FAILED,
@@ -127,6 +136,12 @@ daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *req
         }
         values[i] = result == DARAN_OK ? value.u32 : 0u;
     }
+    daran_reply_error_registers(drive, values);
+    return DARAN_OK;
+}
+
+void daran_reply_error_registers(daran_drive_t *drive, const uint32_t *values)
+{
     const char *name = register_names;
     for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
         daran_reply_begin(drive);
@@ -135,5 +150,4 @@ daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *req
         daran_reply_end(drive);
         name += register_name_len[i] + 1u;
     }
-    return DARAN_OK;
 }

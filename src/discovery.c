@@ -1,6 +1,7 @@
 /* `h id properties [prefix]`: every property the drive knows, one line each
  * in path order, from the same table that lookup and range checks use (so
  * it cannot drift from them), then `end` (protocol.md 11.1). */
+#include "can.h"
 #include "handlers.h"
 #include "property.h"
 #include "reply.h"
@@ -37,6 +38,12 @@ static bool reply_starts_with(const daran_drive_t *drive, const daran_field_t *p
 
 daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *request)
 {
+    return daran_discovery(drive, request, false);
+}
+
+daran_result_t daran_discovery(daran_drive_t *drive, const daran_request_t *request,
+                               bool on_can_only)
+{
     static const char properties[] = "properties";
     daran_field_t what = daran_field_at(request, 2);
     if (what.len != sizeof properties - 1u) {
@@ -55,6 +62,13 @@ daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *
     for (daran_prop_t prop = daran_discovery_next(&cursor); prop != DARAN_PROP_COUNT;
          prop = daran_discovery_next(&cursor)) {
         daran_property_t row = daran_property_row(prop);
+#if DARAN_ENABLE_CAN_BRIDGE
+        if (on_can_only && daran_can_address_of(prop) == 0u) {
+            continue; /* a bridged `h N properties` lists what the bridge can reach (C35) */
+        }
+#else
+        (void)on_can_only;
+#endif
         daran_reply_begin(drive);
         daran_reply_path(drive, prop);
         if (!reply_starts_with(drive, &prefix)) {

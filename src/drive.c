@@ -3,6 +3,7 @@
  * daran_process_line() a whole line; each goes through the framer, then the
  * framer's verdict -> checksum -> command table -> addressing -> handler ->
  * reply. This file runs the road; no stage calls back into it. */
+#include "bridge.h"
 #include "checksum.h"
 #include "command.h"
 #include "daran_port.h"
@@ -75,6 +76,11 @@ size_t daran_poll(daran_drive_t *drive)
     size_t left = daran_rx_queued(&drive->rx);
     size_t lines = 0;
     while (left != 0u) {
+#if DARAN_ENABLE_CAN_BRIDGE
+        if (drive->bridge != NULL && daran_bridge_waiting(drive->bridge)) {
+            break; /* a bridged query waits: the next line waits for its answer (C32) */
+        }
+#endif
         const uint8_t *bytes;
         size_t run = daran_rx_run(&drive->rx, left, &bytes);
         if (*bytes == '\n' && drive->line_len == 0u && drive->line_flags == 0u) {
@@ -195,6 +201,26 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
      * gateway too (D10); only the broadcast also runs here. */
     bool elsewhere = request.motor != 0u && request.motor != own;
     bool broadcast = request.motor == 0u && (flags & DARAN_CMD_READ) == 0u;
+#if DARAN_ENABLE_CAN_BRIDGE
+    if ((elsewhere || broadcast) && daran_bridge_active(drive)) {
+        /* Checked like a line for this drive, then sent; a broadcast then
+         * runs here too (C31, C34). A port command has no CAN form. */
+        if (port != NULL) {
+            return elsewhere ? DARAN_ERR_NOT_BRIDGED : daran_from_hal(port->handler(drive, &request, drive->port_ctx));
+        }
+        if (!count_ok) {
+            return DARAN_ERR_INVALID_FORMAT;
+        }
+        if (property != DARAN_OK) {
+            return property;
+        }
+        result = daran_bridge_line(drive->bridge, &request, broadcast);
+        if (elsewhere || result != DARAN_OK) {
+            return result;
+        }
+        return daran_run_command(drive, &request);
+    }
+#endif
     if ((elsewhere || broadcast) && drive->forward != NULL) {
         drive->forward(drive->forward_ctx, request.motor, line->text, line->len);
     }

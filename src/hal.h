@@ -7,11 +7,12 @@
 #include "daran_drive.h"
 
 /* What the core answers for a HAL's result: protocol errors as they are,
- * anything else (DARAN_ERR_BAD_ARGUMENT, unknown values) `motor fault`. */
+ * anything else (the bridge's own three, DARAN_ERR_BAD_ARGUMENT, unknown
+ * values) `motor fault`. */
 static inline daran_result_t daran_from_hal(daran_result_t result)
 {
-    /* A HAL may return anything; what is not a protocol error is a fault (D26). */
-    return (unsigned)result < (unsigned)DARAN_ERR_BAD_ARGUMENT ? result : DARAN_ERR_MOTOR_FAULT;
+    /* A HAL may return anything; what is not a drive's error is a fault (D26). */
+    return (unsigned)result < (unsigned)DARAN_ERR_NO_REPLY ? result : DARAN_ERR_MOTOR_FAULT;
 }
 
 daran_result_t daran_get(daran_drive_t *drive, daran_prop_t prop, daran_value_t *out);

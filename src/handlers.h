@@ -75,6 +75,14 @@ daran_result_t daran_start_impedance(daran_drive_t *drive, float kp, float kd, b
 daran_result_t daran_check_property_value(daran_prop_t prop, daran_value_t value);
 daran_result_t daran_commit_property(daran_drive_t *drive, daran_prop_t prop, daran_value_t value);
 
+/* The values of a line, parsed and checked as its handler does, without
+ * running it: what the bridge sends for a line for another drive. */
+daran_result_t daran_parse_motion(const daran_request_t *request, float *values, uint8_t *count);
+daran_result_t daran_parse_preset(const daran_request_t *request, float *values);
+daran_result_t daran_parse_start(const daran_request_t *request, bool *rel);
+daran_result_t daran_parse_property_value(daran_prop_t prop, const daran_field_t *field,
+                                          daran_value_t *value);
+
 /* commands_system.c: a HAL action, and what the core forgets with it. */
 daran_result_t daran_run_action(daran_drive_t *drive, daran_action_t action);
 
@@ -85,6 +93,14 @@ daran_result_t daran_run_action(daran_drive_t *drive, daran_action_t action);
 #define DARAN_APPEND_MAX 9u
 daran_result_t daran_append_properties(daran_drive_t *drive, const daran_prop_t *props,
                                        size_t count);
+/* Append @p count values, each printed as a property of types[i]
+ * (daran_prop_type_t) prints: what daran_append_properties() does after
+ * its reads, and what the bridge prints of a remote drive's values. */
+void daran_append_values(daran_drive_t *drive, const daran_value_t *values,
+                         const uint8_t *types, size_t count);
+/* `e`'s seven lines, of the registers' values in `e`'s order. */
+#define DARAN_ERROR_REGISTERS 7u
+void daran_reply_error_registers(daran_drive_t *drive, const uint32_t *values);
 /* The same as a whole reply line (`r`, `f`, `g`, `i`). */
 daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *props,
                                       size_t count);
@@ -103,5 +119,10 @@ daran_result_t daran_cmd_power(daran_drive_t *drive, const daran_request_t *requ
 daran_result_t daran_cmd_identity(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *request);
+/* `h` and discovery as the bridge answers them for another id (C35): the
+ * core's commands without the port's, the properties with a CAN address. */
+daran_result_t daran_help(daran_drive_t *drive, const daran_request_t *request, bool bridged);
+daran_result_t daran_discovery(daran_drive_t *drive, const daran_request_t *request,
+                               bool on_can_only);
 
 #endif /* DARAN_HANDLERS_H */

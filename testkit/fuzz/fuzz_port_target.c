@@ -344,7 +344,7 @@ static const char *refusal_phrase(daran_result_t result)
         "no preset", "trajectory infeasible", "estop active", "motor fault", "motor idle",
     };
     unsigned r = (unsigned)result;
-    return phrases[r > 0u && r < (unsigned)DARAN_ERR_BAD_ARGUMENT ? r
+    return phrases[r > 0u && r < (unsigned)DARAN_ERR_NO_REPLY ? r
                                                                   : (unsigned)DARAN_ERR_MOTOR_FAULT];
 }
 

@@ -47,6 +47,7 @@ static const char *const phrases[] = {
     "value out of range", "invalid mode", "invalid property", "read only property",
     "invalid checksum", "checksum mismatch", "line too long", "invalid character",
     "no preset", "trajectory infeasible", "estop active", "motor fault", "motor idle",
+    "no reply", "bus error", "not bridged",
 };
 
 void fuzz_fail(const char *fmt, ...)
@@ -170,7 +171,7 @@ static daran_result_t outcome(fuzz_hal_t *h, daran_result_t result)
     h->failed_was_last = result != DARAN_OK;
     if (result != DARAN_OK) {
         h->failed = true;
-        h->fail_answer = ((int)result > 0 && result < DARAN_ERR_BAD_ARGUMENT)
+        h->fail_answer = ((int)result > 0 && result < DARAN_ERR_NO_REPLY)
                              ? result
                              : DARAN_ERR_MOTOR_FAULT;
     }

@@ -148,7 +148,7 @@ static void check_session_with_failure(uint32_t nth, int result, bool getter)
     } else {
         fuzz_hal_arm(&run.hal, nth, result);
     }
-    daran_result_t want = (result > 0 && result < (int)DARAN_ERR_BAD_ARGUMENT)
+    daran_result_t want = (result > 0 && result < (int)DARAN_ERR_NO_REPLY)
                               ? (daran_result_t)result
                               : DARAN_ERR_MOTOR_FAULT;
     bool seen = false;

@@ -203,7 +203,7 @@ static void test_checksum_mismatch_before_unknown_command(void)
 static const char *expected_phrase(daran_result_t r)
 {
     /* a HAL result is answered as such; API misuse and unknown values are a motor fault */
-    if (r <= DARAN_OK || r >= DARAN_ERR_BAD_ARGUMENT)
+    if (r <= DARAN_OK || r >= DARAN_ERR_NO_REPLY)
         return "motor fault";
     return daran_result_phrase(r);
 }
@@ -214,7 +214,8 @@ static const daran_result_t injected[] = {
     DARAN_ERR_INVALID_PROPERTY,  DARAN_ERR_READ_ONLY,             DARAN_ERR_INVALID_CHECKSUM,
     DARAN_ERR_CHECKSUM_MISMATCH, DARAN_ERR_LINE_TOO_LONG,         DARAN_ERR_INVALID_CHARACTER,
     DARAN_ERR_NO_PRESET,         DARAN_ERR_TRAJECTORY_INFEASIBLE, DARAN_ERR_ESTOP_ACTIVE,
-    DARAN_ERR_MOTOR_FAULT,       DARAN_ERR_MOTOR_IDLE,            DARAN_ERR_BAD_ARGUMENT,
+    DARAN_ERR_MOTOR_FAULT,       DARAN_ERR_MOTOR_IDLE,            DARAN_ERR_NO_REPLY,
+    DARAN_ERR_BUS_ERROR,         DARAN_ERR_NOT_BRIDGED,           DARAN_ERR_BAD_ARGUMENT,
     (daran_result_t)DARAN_RESULT_COUNT, (daran_result_t)1000,
 };
 
@@ -338,6 +339,7 @@ static const char *const phrases[] = {
     "value out of range", "invalid mode", "invalid property", "read only property",
     "invalid checksum", "checksum mismatch", "line too long", "invalid character", "no preset",
     "trajectory infeasible", "estop active", "motor fault", "motor idle",
+    "no reply", "bus error", "not bridged",
 };
 
 static bool known_phrase(const char *p, size_t len)

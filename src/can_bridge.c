@@ -1,0 +1,441 @@
+/* The bridge: a line for another drive, validated here like a line for this
+ * one, goes out as the frames of the contract's section 5.2; a query's
+ * replies come back through daran_can_poll() and are printed exactly as the
+ * remote drive would print them. One bridged query at a time: while it
+ * waits, daran_poll() reads no further line (C32). Frames go out when the
+ * line is taken: a transmit the port refuses is `error: bus error` at once
+ * (docs/can.md, "The bridge", says why there is no retry). */
+#include <math.h>
+
+#include "bridge.h"
+#include "can.h"
+#include "can_bytes.h"
+#include "compiler.h"
+#include "handlers.h"
+#include "property.h"
+#include "reply.h"
+
+#if DARAN_ENABLE_CAN_BRIDGE
+
+/* What a finished query prints. */
+enum answer {
+    ANSWER_VALUES,    /* r f g: the values on one line */
+    ANSWER_SERIAL,    /* r serial_number: high * 2^32 + low */
+    ANSWER_IDENTITY,  /* i: fw hw serial */
+    ANSWER_ERRORS,    /* e: seven lines */
+    ANSWER_TRAPEZOID  /* q with omitted values: nothing; the move goes out */
+};
+
+daran_result_t daran_can_bridge_init(daran_can_bridge_t *bridge, daran_can_t *can)
+{
+    if (bridge == NULL || can == NULL || can->drive == NULL) {
+        return DARAN_ERR_BAD_ARGUMENT;
+    }
+    unsigned char *raw = (unsigned char *)bridge;
+    for (size_t i = 0; i < sizeof *bridge; i++) {
+        raw[i] = 0;
+    }
+    bridge->can = can;
+    can->bridge = bridge;
+    can->drive->bridge = bridge;
+    return DARAN_OK;
+}
+
+bool daran_can_bridge_busy(const daran_can_bridge_t *bridge)
+{
+    return bridge->count != 0u;
+}
+
+bool daran_bridge_active(const daran_drive_t *drive)
+{
+    return drive->bridge != NULL && drive->bridge->can->enabled;
+}
+
+static bool send_frame(daran_can_bridge_t *bridge, uint32_t node, uint32_t code,
+                       const uint8_t *data)
+{
+    daran_can_t *can = bridge->can;
+    daran_can_frame_t frame;
+    frame.id = node << 5 | code;
+    frame.dlc = 8;
+    frame.flags = 0;
+    memcpy(frame.data, data, sizeof frame.data);
+    return can->port->send(can->port_ctx, &frame);
+}
+
+static daran_result_t send_or_fail(daran_can_bridge_t *bridge, uint32_t node, uint32_t code,
+                                   const uint8_t *data)
+{
+    return send_frame(bridge, node, code, data) ? DARAN_OK : DARAN_ERR_BUS_ERROR;
+}
+
+/* ---- queries: reads one at a time ---- */
+
+static daran_result_t ask_next(daran_can_bridge_t *bridge)
+{
+    uint8_t data[8] = {0};
+    daran_can_put_u16(data, bridge->reads[bridge->next].address);
+    daran_can_put_u16(data + 2, bridge->reads[bridge->next].type); /* the row's (5.2) */
+    bridge->asked_ms = bridge->can->port->now_ms(bridge->can->port_ctx);
+    return send_or_fail(bridge, bridge->node, DARAN_CAN_READ, data);
+}
+
+/* Start a query of @p count properties (their CAN addresses in this
+ * build's table, C31): `not bridged` when one has none. */
+static daran_result_t ask(daran_can_bridge_t *bridge, uint32_t node, enum answer kind,
+                          const daran_prop_t *props, uint8_t count)
+{
+    for (uint8_t i = 0; i < count; i++) {
+        uint16_t address = daran_can_address_of(props[i]);
+        if (address == 0u) {
+            return DARAN_ERR_NOT_BRIDGED;
+        }
+        bridge->reads[i].address = address;
+        bridge->reads[i].type = (uint8_t)daran_can_type_of(props[i]);
+        bridge->reads[i].done = 0;
+    }
+    bridge->node = (uint8_t)node;
+    bridge->kind = (uint8_t)kind;
+    bridge->next = 0;
+    bridge->wants_checksum = bridge->can->drive->reply_wants_checksum;
+    daran_result_t result = ask_next(bridge);
+    if (result == DARAN_OK) {
+        bridge->count = count; /* waiting now */
+    }
+    return result;
+}
+
+/* A reply's value as the type it came with (its own type code, C7). */
+static daran_prop_type_t reply_value(const daran_can_bridge_read_t *read, daran_value_t *value)
+{
+    value->u64 = 0;
+    switch (read->type) {
+    case DARAN_CAN_TYPE_F32:
+        value->u32 = read->bits;
+        return DARAN_TYPE_F32;
+    case DARAN_CAN_TYPE_S16:
+        value->s32 = (int16_t)(uint16_t)read->bits;
+        return DARAN_TYPE_S32;
+    case DARAN_CAN_TYPE_S32:
+        value->u32 = read->bits;
+        return DARAN_TYPE_S32;
+    case DARAN_CAN_TYPE_U16:
+        value->u32 = read->bits & 0xFFFFu;
+        return DARAN_TYPE_U32;
+    default:
+        value->u32 = read->bits;
+        return DARAN_TYPE_U32;
+    }
+}
+
+static uint64_t serial_of(const daran_can_bridge_read_t *low, const daran_can_bridge_read_t *high)
+{
+    return (uint64_t)high->bits << 32 | low->bits;
+}
+
+/* The line the remote drive would have printed, or its error. */
+static daran_result_t answer(daran_can_bridge_t *bridge)
+{
+    daran_drive_t *drive = bridge->can->drive;
+    const daran_can_bridge_read_t *reads = bridge->reads;
+    daran_value_t values[DARAN_CAN_BRIDGE_READS];
+    uint8_t types[DARAN_CAN_BRIDGE_READS];
+    for (uint8_t i = 0; i < bridge->count; i++) {
+        types[i] = (uint8_t)reply_value(&reads[i], &values[i]);
+    }
+    switch ((enum answer)bridge->kind) {
+    case ANSWER_ERRORS: {
+        uint32_t registers[DARAN_ERROR_REGISTERS];
+        for (uint8_t i = 0; i < DARAN_ERROR_REGISTERS; i++) {
+            registers[i] = values[i].u32;
+        }
+        daran_reply_error_registers(drive, registers);
+        return DARAN_OK;
+    }
+    case ANSWER_TRAPEZOID: {
+        /* the omitted cruise velocity and acceleration, as the remote keeps
+         * them (C37), after the values the line gave */
+        uint8_t data[8];
+        uint8_t read = 0;
+        daran_can_put_f32(data, bridge->values[0]);
+        for (uint8_t i = 1; i < 3u; i++) {
+            float value = bridge->values[i];
+            if (value != value) { /* NaN marks an omitted value */
+                value = values[read++].f32;
+            }
+            (void)daran_can_put_scaled(data + 2u + 2u * i, value, 1);
+        }
+        return send_or_fail(bridge, bridge->node, DARAN_CAN_TRAPEZOID, data);
+    }
+    case ANSWER_SERIAL:
+        values[0].u64 = serial_of(&reads[0], &reads[1]);
+        types[0] = DARAN_TYPE_U64;
+        bridge->count = 1;
+        break;
+    case ANSWER_IDENTITY:
+        values[2].u64 = serial_of(&reads[2], &reads[3]);
+        types[2] = DARAN_TYPE_U64;
+        bridge->count = 3;
+        break;
+    default:
+        break;
+    }
+    daran_reply_begin(drive);
+    daran_append_values(drive, values, types, bridge->count);
+    daran_reply_end(drive);
+    return DARAN_OK;
+}
+
+/* The query ends: its answer, or @p result's error line. */
+static void finish(daran_can_bridge_t *bridge, daran_result_t result)
+{
+    daran_drive_t *drive = bridge->can->drive;
+    drive->reply_wants_checksum = bridge->wants_checksum;
+    if (result == DARAN_OK) {
+        result = answer(bridge);
+    }
+    if (result != DARAN_OK) {
+        daran_reply_error(drive, result);
+    }
+    bridge->count = 0;
+}
+
+void daran_bridge_offer(daran_can_bridge_t *bridge, const daran_can_slot_t *frame)
+{
+    if (bridge->count == 0u) {
+        return;
+    }
+    daran_can_bridge_read_t *read = &bridge->reads[bridge->next];
+    uint32_t type = daran_can_get_u16(frame->data + 2);
+    if (frame->id != (uint16_t)((unsigned)bridge->node << 5 | DARAN_CAN_READ) ||
+        daran_can_get_u16(frame->data) != read->address || type > DARAN_CAN_TYPE_S32) {
+        return; /* not the reply awaited: discarded (C32, C38) */
+    }
+    read->type = (uint8_t)type;
+    read->bits = daran_can_get_u32(frame->data + 4);
+    read->done = 1;
+    bridge->next++;
+    if (bridge->next < bridge->count) {
+        daran_result_t result = ask_next(bridge);
+        if (result != DARAN_OK) {
+            finish(bridge, result);
+        }
+        return;
+    }
+    finish(bridge, DARAN_OK);
+}
+
+bool daran_bridge_waiting(daran_can_bridge_t *bridge)
+{
+    if (bridge->count == 0u) {
+        return false;
+    }
+    daran_can_t *can = bridge->can;
+    if (can->port->now_ms(can->port_ctx) - bridge->asked_ms >= DARAN_CAN_BRIDGE_TIMEOUT_MS) {
+        finish(bridge, DARAN_ERR_NO_REPLY); /* nothing of a partial answer (C32) */
+        return false;
+    }
+    return true;
+}
+
+/* ---- a line: its values parsed into the bridge, then its frames ---- */
+
+/* Scaled fields of a frame: refused when one leaves the s16 range (C3). */
+static daran_result_t put_scaled_pair(uint8_t *data, float first, float second)
+{
+    return daran_can_put_scaled(data + 4, first, 0) && daran_can_put_scaled(data + 6, second, 0)
+               ? DARAN_OK
+               : DARAN_ERR_OUT_OF_RANGE;
+}
+
+/* Step 6 of the checks for the line's values, as its handler makes them
+ * (C31), kept in the bridge: the parse is the core's deepest call chain,
+ * and no frame buffer is on the stack beneath it. bridge->given counts the
+ * values a motion line gave; a start keeps its relative flag there, `w` its
+ * value's bits in reads[0]. */
+static daran_result_t parse_line(daran_can_bridge_t *bridge, const daran_request_t *request,
+                                 uint32_t node)
+{
+    const daran_command_t *command = request->command;
+    daran_result_t result = DARAN_OK;
+    switch (command->word[0]) {
+    case 'r':
+    case 's':
+    case 'u':
+    case 'f':
+    case 'g':
+    case 'i':
+    case 'e':
+    case 'h':
+        return DARAN_OK; /* nothing after the id, or a property checked already */
+    case 'w': {
+        if (DARAN_PROPERTY_ACCESS(daran_property_row(request->prop)) != DARAN_ACCESS_RW) {
+            return DARAN_ERR_READ_ONLY;
+        }
+        if (daran_can_address_of(request->prop) == 0u) {
+            return DARAN_ERR_NOT_BRIDGED;
+        }
+        daran_value_t value;
+        value.u64 = 0;
+        daran_field_t field = daran_field_at(request, 2);
+        result = daran_parse_property_value(request->prop, &field, &value);
+        bridge->reads[0].bits = value.u32;
+        return result;
+    }
+#if DARAN_ENABLE_MULTI_MOTOR
+    case 'm':
+        if (command->word[1] == 's') {
+            return daran_parse_preset(request, bridge->values);
+        }
+        bool rel;
+        result = daran_parse_start(request, &rel);
+        bridge->given = rel ? 1u : 0u;
+        return result;
+#endif
+    default:
+        if (command->arg == DARAN_SHAPE_TRAPEZOID && node == 0u && request->fields->count < 5u) {
+            return DARAN_ERR_NOT_BRIDGED; /* every drive's own limits cannot be read (C35) */
+        }
+        return daran_parse_motion(request, bridge->values, &bridge->given);
+    }
+}
+
+/* t q p v c d with the values parse_line() kept. */
+static daran_result_t send_motion(daran_can_bridge_t *bridge, daran_shape_t shape, uint32_t node)
+{
+    static const daran_prop_t limits[] = {DARAN_PROP_TRAP_TRAJ_VEL_LIMIT,
+                                          DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT};
+    static const uint8_t code_of[] = {DARAN_CAN_TRACK, DARAN_CAN_TRAPEZOID, DARAN_CAN_PASSTHROUGH,
+                                      DARAN_CAN_VELOCITY, DARAN_CAN_TORQUE, DARAN_CAN_PRESET};
+    float *values = bridge->values;
+    uint8_t count = bridge->given;
+    /* omitted optional values: 0, and mode 1 for v and c (5.2) */
+    for (uint8_t i = count; i < 3u; i++) {
+        values[i] = 0.0f;
+    }
+    uint8_t data[8] = {0};
+    daran_can_put_f32(data, values[0]);
+    daran_result_t result;
+    switch (shape) {
+    case DARAN_SHAPE_FILTERED:
+        /* the velocity every drive ignores is saturated, not refused (C3) */
+        (void)daran_can_put_scaled(data + 4, values[1], 1);
+        result = daran_can_put_scaled(data + 6, values[2], 0) ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+        break;
+    case DARAN_SHAPE_TRAPEZOID:
+        if (count < 3u) {
+            /* the remote's own limits first, then the move (C37) */
+            if (count == 2u && !daran_can_put_scaled(data + 4, values[1], 0)) {
+                return DARAN_ERR_OUT_OF_RANGE;
+            }
+            values[1] = count == 2u ? values[1] : NAN; /* NaN: read it from the drive */
+            values[2] = NAN;
+            return ask(bridge, node, ANSWER_TRAPEZOID, limits + (count - 1u), (uint8_t)(3u - count));
+        }
+        result = put_scaled_pair(data, values[1], values[2]);
+        break;
+    case DARAN_SHAPE_VELOCITY:
+    case DARAN_SHAPE_TORQUE: {
+        uint32_t mode = count == 3u ? (uint32_t)values[2] : 1u;
+        if (shape == DARAN_SHAPE_TORQUE && mode == 2u) {
+            mode = 6u; /* the vendor's drives know the torque ramp as 6 (C40) */
+        }
+        daran_can_put_u16(data + 6, mode);
+        result = daran_can_put_scaled(data + 4, values[1], 0) ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
+        break;
+    }
+    case DARAN_SHAPE_IMPEDANCE: {
+        /* a preset, then its start at the same node (C12) */
+        uint8_t start[8] = {DARAN_CAN_SUB_START_IMPEDANCE, 0, 0, 0, 0, 0, 0, 0};
+        result = put_scaled_pair(data, values[1], values[2]);
+        if (result == DARAN_OK) {
+            result = put_scaled_pair(start, values[3], values[4]);
+        }
+        if (result == DARAN_OK) {
+            result = send_or_fail(bridge, node, DARAN_CAN_PRESET, data);
+        }
+        return result == DARAN_OK ? send_or_fail(bridge, node, DARAN_CAN_SYSTEM, start) : result;
+    }
+    default:
+        result = put_scaled_pair(data, values[1], values[2]);
+        break;
+    }
+    return result == DARAN_OK ? send_or_fail(bridge, node, code_of[shape], data) : result;
+}
+
+/* The frames of a line whose values parse_line() kept (5.2). */
+static DARAN_NOINLINE daran_result_t send_line(daran_can_bridge_t *bridge,
+                                               const daran_request_t *request, uint32_t node)
+{
+    static const daran_prop_t feedback[] = {DARAN_PROP_POS_ESTIMATE, DARAN_PROP_VEL_ESTIMATE};
+    static const daran_prop_t power[] = {DARAN_PROP_VBUS_VOLTAGE, DARAN_PROP_IQ_MEASURED};
+    static const daran_prop_t identity[] = {DARAN_PROP_FW_VERSION, DARAN_PROP_HW_VERSION,
+                                            DARAN_PROP_SERIAL_NUMBER_L,
+                                            DARAN_PROP_SERIAL_NUMBER_H};
+    static const daran_prop_t errors[] = {
+        DARAN_PROP_AXIS_ERROR,       DARAN_PROP_MOTOR_ERROR,          DARAN_PROP_ENCODER_ERROR,
+        DARAN_PROP_CONTROLLER_ERROR, DARAN_PROP_FET_THERMISTOR_ERROR, DARAN_PROP_MOTOR_THERMISTOR_ERROR,
+        DARAN_PROP_CAN_ERROR};
+    const daran_command_t *command = request->command;
+    daran_prop_t prop = request->prop;
+    uint8_t data[8] = {0};
+    switch (command->word[0]) {
+    case 'r':
+        if (prop == DARAN_PROP_SERIAL_NUMBER) {
+            return ask(bridge, node, ANSWER_SERIAL, identity + 2, 2);
+        }
+        return ask(bridge, node, ANSWER_VALUES, &request->prop, 1);
+    case 'w':
+        if (node == 0u && prop == DARAN_PROP_CAN_NODE_ID) {
+            return DARAN_OK; /* "the drive on this link" only, never every drive's id (C34) */
+        }
+        daran_can_put_u16(data, daran_can_address_of(prop));
+        daran_can_put_u16(data + 2, daran_can_type_of(prop));
+        daran_can_put_u32(data + 4, bridge->reads[0].bits);
+        return send_or_fail(bridge, node, DARAN_CAN_WRITE, data);
+    case 'm':
+        if (command->word[1] == 's') {
+            daran_can_put_f32(data, bridge->values[0]);
+            /* a mode in p3 goes x 100, as the vendor's libraries send it (C40) */
+            daran_result_t result = put_scaled_pair(data, bridge->values[1], bridge->values[2]);
+            return result == DARAN_OK ? send_or_fail(bridge, node, DARAN_CAN_PRESET, data) : result;
+        }
+        data[0] = (uint8_t)(DARAN_CAN_SUB_START_TRACK + command->arg);
+        data[4] = bridge->given; /* the relative flag (C2) */
+        return send_or_fail(bridge, node, DARAN_CAN_SYSTEM, data);
+    case 's':
+    case 'u':
+        /* ss..st are the HAL actions 0..5 and sub-codes 1..6; u feeds (C36) */
+        data[0] = command->word[0] == 'u' ? DARAN_CAN_SUB_FEED : (uint8_t)(command->arg + 1u);
+        return send_or_fail(bridge, node, DARAN_CAN_SYSTEM, data);
+    case 'f':
+        return ask(bridge, node, ANSWER_VALUES, feedback, 2);
+    case 'g':
+        return ask(bridge, node, ANSWER_VALUES, power, 2);
+    case 'i':
+        return ask(bridge, node, ANSWER_IDENTITY, identity, 4);
+    case 'e':
+        return ask(bridge, node, ANSWER_ERRORS, errors, DARAN_ERROR_REGISTERS);
+    case 'h':
+#if DARAN_ENABLE_HELP
+        return daran_help(bridge->can->drive, request, true); /* no traffic (C35) */
+#else
+        return DARAN_ERR_NOT_BRIDGED;
+#endif
+    default:
+        return send_motion(bridge, (daran_shape_t)command->arg, node);
+    }
+}
+
+daran_result_t daran_bridge_line(daran_can_bridge_t *bridge, const daran_request_t *request,
+                                 bool broadcast)
+{
+    if (bridge->count != 0u) {
+        return DARAN_ERR_BUS_ERROR; /* one bridged request at a time (C32) */
+    }
+    uint32_t node = broadcast ? 0u : request->motor;
+    daran_result_t result = parse_line(bridge, request, node);
+    return result == DARAN_OK ? send_line(bridge, request, node) : result;
+}
+
+#endif /* DARAN_ENABLE_CAN_BRIDGE */
