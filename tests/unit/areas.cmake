@@ -13,4 +13,5 @@ set(DARAN_UNIT_AREAS
   states_and_queries
   api
   extensions
+  can
 )
