@@ -23,6 +23,9 @@
  *   sim_faults.h     stall, overspeed, overtemp, undervoltage, nvm-corrupt;
  *                    HAL refusals; failing NVM saves
  *   sim_bus.h        N drives on one line, each with its protocol instance
+ *   sim_can_bus.h    a CAN bus: queues, arbitration, frame timing, bus faults
+ *   sim_can.h        the line's drives on a CAN bus, each with its CAN front
+ *                    end (daran_can_t)
  *
  * Conventions: functions that can fail return daran_result_t (DARAN_OK is
  * 0; DARAN_ERR_BAD_ARGUMENT reports misuse; any other value is the error
@@ -40,6 +43,8 @@
 
 #include "daran_ascii.h"
 #include "sim_bus.h"
+#include "sim_can.h"
+#include "sim_can_bus.h"
 #include "sim_drive.h"
 #include "sim_extension.h"
 #include "sim_faults.h"

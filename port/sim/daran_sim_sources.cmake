@@ -2,12 +2,16 @@
 # relative to this folder. Read by port/sim/CMakeLists.txt and by
 # daran_ascii_add_sim() (cmake/DaranSim.cmake), in the source tree and from
 # <prefix>/share/daran_ascii/port/sim where the package installs this folder.
-# daran-sim's own files (sim_main.c, sim_file_storage.*) are not part of it.
+# daran-sim's own files (sim_main.c, sim_file_storage.*, sim_pty.*, the CAN
+# adapters sim_can_pty.*, sim_slcan.*, sim_usbcan.*, sim_can_text.*) are not
+# part of it.
 set(DARAN_SIM_LIBRARY_SOURCES
   sim_model.c
   sim_nvm.c
   sim_drive.c
   sim_bus.c
+  sim_can_bus.c
+  sim_can.c
   sim_extension.c
   sim_faults.c)
 set(DARAN_SIM_LIBRARY_HEADERS
@@ -16,5 +20,7 @@ set(DARAN_SIM_LIBRARY_HEADERS
   sim_nvm.h
   sim_drive.h
   sim_bus.h
+  sim_can_bus.h
+  sim_can.h
   sim_extension.h
   sim_faults.h)

@@ -1,7 +1,9 @@
 /* daran-sim: simulated Daran drives on a multi-drop line, driven from stdin
  * in lock-step (time moves only with `!advance`) or from a pseudo-terminal in
- * real time (--pty). The interface is described in docs/simulator.md and by
- * --help; tests and users script it, so it changes only compatibly. */
+ * real time (--pty); with --can the drives also share a simulated CAN bus,
+ * reached from stdin (`!can`) and from host adapters on pseudo-terminals
+ * (--slcan, --usbcan). The interface is described in docs/simulator.md and
+ * by --help; tests and users script it, so it changes only compatibly. */
 #define _XOPEN_SOURCE 700
 #define _DEFAULT_SOURCE
 #include <errno.h>
@@ -25,7 +27,10 @@
 #include <unistd.h>
 
 #include "daran_sim.h"
+#include "sim_can_pty.h"
+#include "sim_can_text.h"
 #include "sim_file_storage.h"
+#include "sim_pty.h"
 
 #define MAX_ADVANCE_S 86400.0
 #define MAX_TICK_HZ 100000u
@@ -38,6 +43,10 @@
 #define PROTOCOL_KEEP ((size_t)DARAN_LINE_MAX + 1u)
 /* Longest directive line (a longer `!#` comment is still just ignored). */
 #define DIRECTIVE_MAX 1024u
+/* Words of a directive, its name included (`!can` takes 10). */
+#define DIRECTIVE_WORDS 16
+/* Host adapters on pseudo-terminals: --slcan, --usbcan. */
+#define CAN_PTYS 2u
 /* Diagnostics on stderr: at most this many a second, the rest counted. */
 #define DIAG_PER_SECOND 20u
 /* --pty output waiting for the client: the pty is not read while this much
@@ -86,6 +95,17 @@ static const char usage_text[] =
     "  --echo             also print each request as \"> line\", each reply line as\n"
     "                     \"< line\" and each directive (for demos; stdout is then\n"
     "                     no longer the drives' bytes)\n"
+    "  --can              the drives share a simulated CAN bus too (1 Mbit/s, the\n"
+    "                     vendor's CAN protocol): stdin sends frames with !can and\n"
+    "                     stdout shows each frame the console's node receives as\n"
+    "                     \"can SECONDS ID [DLC] BYTES\" (hex)\n"
+    "  --slcan            (implies --can) a pseudo-terminal speaking the Lawicel\n"
+    "                     serial-line CAN protocol (slcand, python-can's slcan) as\n"
+    "                     one more node on the bus; its path is printed on stdout\n"
+    "                     (after --pty's) and the drives run in real time\n"
+    "  --usbcan           (implies --can) the same for the vendor USB-CAN adapter's\n"
+    "                     16-byte packets (DrEmpower_can.py); its path is printed\n"
+    "                     after --slcan's\n"
     "  --help             show this text and exit\n";
 
 /* (two strings: C99 compilers need take no longer literal than 4095 bytes) */
@@ -117,6 +137,18 @@ static const char usage_more[] =
     "                       bit 0 (a warning: motion is not blocked)\n"
     "  !load ID NM        apply an external load torque of NM (-1000..1000) to the\n"
     "                     shaft; 0 removes it\n"
+    "  !fault ID KIND     with --can, bus faults; KIND is one of\n"
+    "                     can-lose [N]: the next N frames (default 1) the drive\n"
+    "                       sends are lost (ID 0: the next N anyone sends)\n"
+    "                     can-mute: the drive receives but sends nothing\n"
+    "                     can-unplug: the drive is off the bus (its frames wait)\n"
+    "                     can-bus-off: its sends fail, it receives nothing\n"
+    "                     can-recover: its bus faults end\n"
+    "                     ID 0: every node, the host adapters included (bus-off:\n"
+    "                     the whole bus is down)\n"
+    "  !can ID [BYTES]    with --can, the console's node sends a frame: ID hex\n"
+    "                     (3 digits, or 8 for an extended id), BYTES hex, 0..8\n"
+    "                     of them (R or Rn alone: a remote frame of DLC n)\n"
     "  !# TEXT            a comment, ignored\n"
     "  ID is a drive's current can_node_id; 0 means every drive.\n"
     "\n"
@@ -141,10 +173,23 @@ typedef struct sim_app {
     double record_start_s;
     uint32_t trace_every;
     bool echo;
-    bool pty;
+    bool pty;       /* --pty: the ASCII link on a pseudo-terminal */
+    bool realtime;  /* a pseudo-terminal is open (--pty, --slcan, --usbcan): time is real */
     int pty_fd;
     unsigned long line_no;
     int status;
+    /* --can: the drives' CAN bus, the console's node on it (`!can`, the
+     * `can ...` lines on stdout) and the host adapters on pseudo-terminals */
+    bool can_on;
+    daran_sim_can_t can;
+    uint32_t console_node;
+    sim_can_pty_t can_pty[CAN_PTYS];
+    uint32_t can_ptys;
+    bool stdout_pending;                          /* console lines not yet flushed */
+    uint32_t can_dropped_told[DARAN_SIM_MAX_DRIVES]; /* daran_can_dropped() already told */
+    uint32_t can_unsent_told[DARAN_SIM_MAX_DRIVES];  /* daran_can_unsent() already told */
+    unsigned long pty_dropped_told[CAN_PTYS];
+    unsigned long pty_refused_told[CAN_PTYS];
 } sim_app_t;
 
 static sim_app_t app;
@@ -406,6 +451,62 @@ static void report_lost(void)
     }
 }
 
+/* A count that a power cycle may have restarted: what is new since @p told. */
+static uint32_t news(uint32_t now, uint32_t *told)
+{
+    uint32_t fresh;
+    if (now < *told) {
+        *told = 0u;
+    }
+    fresh = now - *told;
+    *told = now;
+    return fresh;
+}
+
+/* CAN frames a drive lost (its receive ring full) or could not send, and
+ * frames an adapter dropped or had refused: never silent. */
+static void report_can(void)
+{
+    uint32_t i;
+    for (i = 0; i < app.bus.count; i++) {
+        uint32_t id = daran_sim_drive_id(&app.bus.node[i].sim);
+        uint32_t lost = news(daran_can_dropped(&app.can.front[i]), &app.can_dropped_told[i]);
+        uint32_t unsent = news(daran_can_unsent(&app.can.front[i]), &app.can_unsent_told[i]);
+        if (lost > 0u) {
+            diag_msg("drive %u: %u CAN frames lost (its receive ring of %u frames was full)", id,
+                     lost, (unsigned)DARAN_CAN_RX_FRAMES);
+        }
+        if (unsent > 0u) {
+            diag_msg("drive %u: %u CAN frames not sent (bus-off, or its transmit queue full)", id,
+                     unsent);
+        }
+    }
+    for (i = 0; i < app.can_ptys; i++) {
+        const sim_can_pty_t *p = &app.can_pty[i];
+        if (p->dropped != app.pty_dropped_told[i]) {
+            diag_msg("%s: %lu frames for the client dropped (it has not read %u KiB)",
+                     sim_can_pty_option(p), p->dropped - app.pty_dropped_told[i],
+                     (unsigned)(SIM_CAN_PTY_OUT_MAX / 1024u));
+            app.pty_dropped_told[i] = p->dropped;
+        }
+        if (p->refused != app.pty_refused_told[i]) {
+            diag_msg("%s: %lu of the client's frames refused (bus-off)", sim_can_pty_option(p),
+                     p->refused - app.pty_refused_told[i]);
+            app.pty_refused_told[i] = p->refused;
+        }
+    }
+}
+
+/* The console's node received a frame: a `can ...` line on stdout. */
+static void console_receive(void *ctx, const daran_can_frame_t *frame, uint64_t end_ns)
+{
+    char line[SIM_CAN_TEXT_LINE_MAX];
+    size_t n = sim_can_text_format(frame, end_ns, line);
+    (void)ctx;
+    fwrite(line, 1, n, stdout);
+    app.stdout_pending = true;
+}
+
 static void sink_stdout(void *ctx, uint32_t id, const char *bytes, size_t len)
 {
     (void)ctx;
@@ -549,7 +650,12 @@ static void run_ticks(uint64_t n)
 {
     uint64_t k;
     for (k = 0; k < n && stop_signal == 0; k++) {
-        daran_sim_bus_tick(&app.bus);
+        if (app.can_on) {
+            daran_sim_can_tick(&app.can); /* the bus, the front ends, then the line's tick */
+            report_can();
+        } else {
+            daran_sim_bus_tick(&app.bus);
+        }
         trace_row();
         if (daran_sim_bus_collect(&app.bus, app.pty ? sink_pty : sink_stdout, NULL) > 0u) {
             report_lost();
@@ -567,7 +673,7 @@ static void record_header(void)
           "# then the exact bytes of the line before its \\n. Directives are not recorded.\n",
           app.record);
     fprintf(app.record, "# daran-sim --drives %u --tick-hz %u%s\n", app.bus.count,
-            app.bus.tick_hz, app.pty ? " --pty (real time)" : "");
+            app.bus.tick_hz, app.pty ? " --pty (real time)" : app.realtime ? " (real time)" : "");
 }
 
 /* Simulated time in as many decimals as make it exact (4 at 1 kHz, 6 at
@@ -607,7 +713,7 @@ static void record_line(const char *bytes, size_t kept, uint64_t total)
                 "(more than DARAN_LINE_MAX %u: the drives answer both `line too long`)\n",
                 total, kept, (unsigned)DARAN_LINE_MAX);
     }
-    if (app.pty) {
+    if (app.realtime) {
         fprintf(app.record, "%.6f", now_s() - app.record_start_s);
     } else {
         record_sim_time();
@@ -641,9 +747,67 @@ static uint32_t select_drives(const char *text, uint32_t out[DARAN_SIM_MAX_DRIVE
     return n;
 }
 
+/* `!fault ID can-...` (argv as directive() splits it). ID 0 is the bus
+ * itself: every node, the host adapters included. */
+static void can_fault(int argc, char **argv, daran_sim_can_fault_t fault)
+{
+    uint32_t sel[DARAN_SIM_MAX_DRIVES];
+    unsigned long count = 1ul;
+    unsigned long id;
+    uint32_t n;
+    uint32_t i;
+    if (!app.can_on) {
+        complain("!fault %s needs --can", argv[2]);
+        return;
+    }
+    if (argc > (fault == DARAN_SIM_CAN_FAULT_LOSE ? 4 : 3)) {
+        complain("usage: !fault ID %s", fault == DARAN_SIM_CAN_FAULT_LOSE ? "can-lose [N]" : argv[2]);
+        return;
+    }
+    if (argc == 4 && (!parse_uint(argv[3], 1000000ul, &count) || count < 1ul)) {
+        complain("bad count '%s' for can-lose (frames, 1..1000000)", argv[3]);
+        return;
+    }
+    if (parse_uint(argv[1], 255ul, &id) && id == 0ul) {
+        sel[0] = DARAN_SIM_CAN_ANY_NODE;
+        n = 1u;
+    } else {
+        n = select_drives(argv[1], sel); /* drive i is node i of the bus */
+    }
+    for (i = 0; i < n; i++) {
+        if (daran_sim_can_bus_fault(&app.can.wire, sel[i], fault, (uint32_t)count) != DARAN_OK) {
+            complain("!fault %s: the bus refused it", argv[2]); /* a node it does not have */
+        }
+    }
+}
+
+/* `!can ID [BYTES...]`: the console's node sends a frame, at the current
+ * simulated time. */
+static void can_directive(int argc, char **argv)
+{
+    daran_can_frame_t frame;
+    const char *why = NULL;
+    if (!app.can_on) {
+        complain("!can needs --can");
+        return;
+    }
+    if (!sim_can_text_parse(argc - 1, argv + 1, &frame, &why)) {
+        complain("!can: %s", why);
+        return;
+    }
+    if (app.can.wire.bus_off || app.can.wire.node[app.console_node].bus_off) {
+        diag_msg("line %lu: !can: the bus is off: frame %s not sent", app.line_no, argv[1]);
+        return;
+    }
+    if (!daran_sim_can_bus_send(&app.can.wire, app.console_node, &frame)) {
+        complain("!can: %u frames already wait to be sent (let time run with !advance)",
+                 (unsigned)DARAN_SIM_CAN_TX_FRAMES);
+    }
+}
+
 static void directive(char *line)
 {
-    char *argv[8];
+    char *argv[DIRECTIVE_WORDS];
     int argc = 0;
     char *save = NULL;
     char *tok;
@@ -654,7 +818,7 @@ static void directive(char *line)
     if (line[1] == '#') {
         return;
     }
-    for (tok = strtok_r(line + 1, " \t\r\n", &save); tok != NULL && argc < 8;
+    for (tok = strtok_r(line + 1, " \t\r\n", &save); tok != NULL && argc < DIRECTIVE_WORDS;
          tok = strtok_r(NULL, " \t\r\n", &save)) {
         argv[argc++] = tok;
     }
@@ -675,8 +839,8 @@ static void directive(char *line)
             complain("bad time '%s' for !advance (seconds, 0..%g)", argv[1], MAX_ADVANCE_S);
             return;
         }
-        if (app.pty) {
-            complain("!advance has no meaning in --pty mode (time is real)");
+        if (app.realtime) {
+            complain("!advance has no meaning in real time (--pty, --slcan, --usbcan)");
             return;
         }
         run_ticks((uint64_t)llround(s * (double)app.bus.tick_hz));
@@ -692,12 +856,18 @@ static void directive(char *line)
     } else if (strcmp(argv[0], "fault") == 0) {
         /* the library's fault injection, as a test would call it */
         daran_sim_fault_t fault;
+        daran_sim_can_fault_t bus_fault;
+        if (argc >= 3 && daran_sim_can_fault_from_name(argv[2], &bus_fault)) {
+            can_fault(argc, argv, bus_fault);
+            return;
+        }
         if (argc != 3) {
             complain("usage: !fault ID %s", DARAN_SIM_FAULT_NAMES);
             return;
         }
         if (!daran_sim_fault_from_name(argv[2], &fault)) {
-            complain("unknown fault '%s' (%s)", argv[2], DARAN_SIM_FAULT_NAMES);
+            complain("unknown fault '%s' (%s; with --can %s)", argv[2], DARAN_SIM_FAULT_NAMES,
+                     DARAN_SIM_CAN_FAULT_NAMES);
             return;
         }
         n = select_drives(argv[1], sel);
@@ -724,6 +894,8 @@ static void directive(char *line)
         for (i = 0; i < n; i++) {
             app.bus.node[sel[i]].sim.model.ext_torque_nm = nm;
         }
+    } else if (strcmp(argv[0], "can") == 0) {
+        can_directive(argc, argv);
     } else {
         complain("unknown directive '!%s' (see --help)", argv[0]);
     }
@@ -887,33 +1059,48 @@ static void run_lockstep(void)
     source_eof(&stdin_source);
 }
 
-/* ---- real-time pty mode ---- */
-
-static int open_pty(char *path, size_t path_size, int *slave_keep)
-{
-    struct termios tio;
-    const char *name;
-    int fd = posix_openpt(O_RDWR | O_NOCTTY);
-    if (fd < 0 || grantpt(fd) != 0 || unlockpt(fd) != 0 || (name = ptsname(fd)) == NULL) {
-        return -1;
-    }
-    snprintf(path, path_size, "%s", name);
-    /* Holding the slave open ourselves keeps the master readable (no
-     * hang-up) while no client has the port open. */
-    *slave_keep = open(path, O_RDWR | O_NOCTTY);
-    if (*slave_keep >= 0 && tcgetattr(*slave_keep, &tio) == 0) {
-        cfmakeraw(&tio);
-        (void)tcsetattr(*slave_keep, TCSANOW, &tio);
-    }
-    (void)fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK);
-    return fd;
-}
+/* ---- real time: --pty, --slcan, --usbcan ---- */
 
 static line_source_t pty_source;
 
-static int run_pty(void)
+/* The pseudo-terminals' paths on stdout: the ASCII link's first, then the
+ * adapters' in the order --slcan, --usbcan. */
+static int open_links(int *slave_keep)
 {
     char path[256];
+    uint32_t k;
+    if (app.pty) {
+        app.pty_fd = sim_pty_open(path, sizeof path, slave_keep);
+        if (app.pty_fd < 0) {
+            fprintf(stderr, "daran-sim: cannot create a pseudo-terminal: %s\n", strerror(errno));
+            return 1;
+        }
+        printf("%s\n", path);
+    }
+    for (k = 0; k < app.can_ptys; k++) {
+        printf("%s\n", app.can_pty[k].path);
+    }
+    fflush(stdout);
+    return 0;
+}
+
+/* After ticks: what the adapters and the console's node received goes out. */
+static void flush_can_outputs(void)
+{
+    uint32_t k;
+    for (k = 0; k < app.can_ptys; k++) {
+        sim_can_pty_flush(&app.can_pty[k]);
+    }
+    if (app.stdout_pending) {
+        fflush(stdout);
+        app.stdout_pending = false;
+    }
+}
+
+static int run_realtime(void)
+{
+    /* the ASCII pty, stdin, then the CAN adapters */
+    struct pollfd pfd[2u + CAN_PTYS];
     int slave_keep = -1;
     double period = 1.0 / (double)app.bus.tick_hz;
     double next;
@@ -921,35 +1108,33 @@ static int run_pty(void)
     size_t pty_pos = 0u;
     size_t pty_len = 0u;
     bool stdin_open = true;
+    uint32_t k;
 
-    app.pty_fd = open_pty(path, sizeof path, &slave_keep);
-    if (app.pty_fd < 0) {
-        fprintf(stderr, "daran-sim: cannot create a pseudo-terminal: %s\n", strerror(errno));
+    app.pty_fd = -1;
+    if (open_links(&slave_keep) != 0) {
         return 1;
     }
     source_init(&pty_source, false, sink_pty);
     source_init(&stdin_source, true, sink_stdout);
-    printf("%s\n", path);
-    fflush(stdout);
     next = now_s() + period;
     while (stop_signal == 0) {
-        struct pollfd pfd[2];
         double wait = next - now_s();
         int timeout = wait <= 0.0 ? 0 : (int)ceil(wait * 1000.0);
-        nfds_t nfds = 1;
         /* read the pty only when its last chunk is done and the replies
          * are not piling up (back-pressure) */
         bool want_pty = pty_pos == pty_len && outq.len < OUTQ_HIGH;
-        pfd[0].fd = app.pty_fd;
+        pfd[0].fd = app.pty_fd; /* poll() skips a negative descriptor */
         pfd[0].events = (short)((want_pty ? POLLIN : 0) | (outq.len > 0u ? POLLOUT : 0));
-        pfd[0].revents = 0;
-        pfd[1].fd = STDIN_FILENO;
+        pfd[1].fd = stdin_open ? STDIN_FILENO : -1;
         pfd[1].events = POLLIN;
-        pfd[1].revents = 0;
-        if (stdin_open) {
-            nfds = 2;
+        for (k = 0; k < app.can_ptys; k++) {
+            pfd[2u + k].fd = app.can_pty[k].fd;
+            pfd[2u + k].events = sim_can_pty_events(&app.can_pty[k]);
         }
-        if (poll(pfd, nfds, timeout) < 0 && errno != EINTR) {
+        for (k = 0; k < 2u + app.can_ptys; k++) {
+            pfd[k].revents = 0;
+        }
+        if (poll(pfd, (nfds_t)(2u + app.can_ptys), timeout) < 0 && errno != EINTR) {
             diag_urgent("poll: %s", strerror(errno));
             app.status = 1;
             break;
@@ -984,10 +1169,14 @@ static int run_pty(void)
             ssize_t n = read(STDIN_FILENO, buf, sizeof buf);
             if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) {
                 source_eof(&stdin_source);
-                stdin_open = false; /* keep serving the pty */
+                stdin_open = false; /* keep serving the ptys */
             } else if (n > 0) {
                 source_feed(&stdin_source, buf, (size_t)n);
             }
+        }
+        /* the adapters' frames join the bus at the current tick's time */
+        for (k = 0; k < app.can_ptys; k++) {
+            sim_can_pty_serve(&app.can_pty[k], pfd[2u + k].revents);
         }
         {
             double t = now_s();
@@ -1002,6 +1191,7 @@ static int run_pty(void)
         if (outq.len > 0u) {
             outq_flush();
         }
+        flush_can_outputs();
         outq_report(false);
         diag_tick();
     }
@@ -1009,7 +1199,9 @@ static int run_pty(void)
     if (slave_keep >= 0) {
         close(slave_keep);
     }
-    close(app.pty_fd);
+    if (app.pty_fd >= 0) {
+        close(app.pty_fd);
+    }
     return 0;
 }
 
@@ -1131,6 +1323,37 @@ static void keep_std_fds(void)
     }
 }
 
+/* --can: the drives' front ends on the bus, the console's node, and the
+ * adapters asked for (which imply --can). Exit status 2 when one cannot be
+ * set up. */
+static int start_can(bool slcan, bool usbcan)
+{
+    static const sim_can_pty_kind_t kinds[CAN_PTYS] = {SIM_CAN_PTY_SLCAN, SIM_CAN_PTY_USBCAN};
+    bool wanted[CAN_PTYS];
+    uint32_t k;
+    wanted[0] = slcan;
+    wanted[1] = usbcan;
+    app.can_on = true;
+    if (daran_sim_can_attach(&app.can, &app.bus) != DARAN_OK) {
+        fprintf(stderr, "daran-sim: --can: the drives' CAN front ends refused their port\n");
+        return 2;
+    }
+    app.console_node = daran_sim_can_bus_add_node(&app.can.wire, console_receive, NULL);
+    for (k = 0; k < CAN_PTYS; k++) {
+        sim_can_pty_t *p = &app.can_pty[app.can_ptys];
+        if (!wanted[k]) {
+            continue;
+        }
+        if (!sim_can_pty_open(p, kinds[k], &app.can.wire)) {
+            fprintf(stderr, "daran-sim: %s: cannot create a pseudo-terminal: %s\n",
+                    kinds[k] == SIM_CAN_PTY_SLCAN ? "--slcan" : "--usbcan", strerror(errno));
+            return 2;
+        }
+        app.can_ptys++;
+    }
+    return 0;
+}
+
 static int bad_option(const char *fmt, const char *arg)
 {
     fputs("daran-sim: ", stderr);
@@ -1164,6 +1387,9 @@ int main(int argc, char **argv)
         {"pty", no_argument, NULL, 'p'},
         {"echo", no_argument, NULL, 'E'},
         {"record", required_argument, NULL, 'R'},
+        {"can", no_argument, NULL, 'c'},
+        {"slcan", no_argument, NULL, 's'},
+        {"usbcan", no_argument, NULL, 'u'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
     };
@@ -1173,6 +1399,8 @@ int main(int argc, char **argv)
     const char *nvm_dir = NULL;
     const char *trace_path = NULL;
     const char *record_path = NULL;
+    bool slcan = false;
+    bool usbcan = false;
     int c;
     int rc;
     uint32_t i;
@@ -1213,6 +1441,15 @@ int main(int argc, char **argv)
             break;
         case 'R':
             record_path = optarg;
+            break;
+        case 'c':
+            app.can_on = true;
+            break;
+        case 's':
+            slcan = true;
+            break;
+        case 'u':
+            usbcan = true;
             break;
         case 'h':
             fputs(usage_text, stdout);
@@ -1260,6 +1497,12 @@ int main(int argc, char **argv)
         trace_header();
         trace_row();
     }
+    if (app.can_on || slcan || usbcan) {
+        if ((rc = start_can(slcan, usbcan)) != 0) {
+            return rc;
+        }
+    }
+    app.realtime = app.pty || app.can_ptys > 0u;
     if (record_path != NULL) {
         app.record = fopen(record_path, "w");
         if (app.record == NULL) {
@@ -1271,8 +1514,8 @@ int main(int argc, char **argv)
         app.record_start_s = now_s();
     }
 
-    if (app.pty) {
-        rc = run_pty();
+    if (app.realtime) {
+        rc = run_realtime();
         if (rc != 0) {
             app.status = rc;
         }
@@ -1309,6 +1552,9 @@ int main(int argc, char **argv)
     }
     for (i = 0; i < DARAN_SIM_MAX_DRIVES; i++) {
         daran_sim_file_storage_close(&app.files[i]);
+    }
+    for (i = 0; i < app.can_ptys; i++) {
+        sim_can_pty_close(&app.can_pty[i]);
     }
     (void)diag_summary();
     if (stop_signal != 0) {

@@ -1,0 +1,76 @@
+/* The drives of a simulated line (daran_sim_bus_t) on a simulated CAN bus
+ * (daran_sim_can_bus_t): each drive's protocol instance gets its CAN front
+ * end (daran_can_t, daran_can.h) as a firmware port would attach it. The
+ * front end's port queues its frames on the drive's node of the bus and
+ * reads the bus's clock; the bus delivers every frame into the receive ring
+ * of each other drive (daran_can_receive(), as a receive interrupt does).
+ *
+ * Drive i (0-based, as in line->node[i]) is node i of the bus; host
+ * adapters join after them with daran_sim_can_bus_add_node(&can->wire, ...)
+ * and send with daran_sim_can_bus_send(). One control tick
+ * (daran_sim_can_tick()) runs the bus to the end of the tick, then each
+ * front end's daran_can_poll() (frames run, replies queued at the tick's
+ * time), then the line's tick (models, telemetry): the main loop of the
+ * example in docs/can.md, once per tick. A frame sent at a tick therefore
+ * reaches the other drives' rings during the next tick and runs at its end.
+ *
+ * The front ends need a core built with DARAN_ENABLE_CAN (the default).
+ * Portable C99: no stdio, no heap; the caller owns the object. */
+#ifndef DARAN_SIM_CAN_H
+#define DARAN_SIM_CAN_H
+
+#include <stdint.h>
+
+#include "daran_can.h"
+#include "sim_bus.h"
+#include "sim_can_bus.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct daran_sim_can daran_sim_can_t;
+
+/* The context of one drive's CAN port. */
+typedef struct daran_sim_can_port_ctx {
+    daran_sim_can_t *owner;
+    uint32_t index;
+} daran_sim_can_port_ctx_t;
+
+struct daran_sim_can {
+    daran_sim_can_bus_t wire;
+    daran_sim_bus_t *line;
+    daran_can_t front[DARAN_SIM_MAX_DRIVES];
+    daran_sim_can_port_ctx_t port_ctx[DARAN_SIM_MAX_DRIVES];
+    daran_sim_setup_fn chained_setup; /* the line's setup function before attaching */
+    void *chained_ctx;
+};
+
+/* The port every front end is given: send queues on the drive's node,
+ * now_ms reads the bus's clock, no system hook. */
+extern const daran_can_port_t daran_sim_can_port;
+
+/* Put every drive of @p line on a new bus at DARAN_SIM_CAN_BIT_RATE whose
+ * clock starts at the line's simulated time: drive i becomes node i and its
+ * protocol instance gets its front end (daran_can_init(), which reads
+ * can.config.protocol). The line's setup function (daran_sim_bus_set_setup(),
+ * set before this call) is kept and runs first on each new protocol instance
+ * a power cycle starts; then that drive's front end is initialised again and
+ * its controller reset (daran_sim_can_bus_reset_node()). Set no other setup
+ * function afterwards. DARAN_ERR_BAD_ARGUMENT when a front end refuses its
+ * port (a core without CAN cannot be attached). O(drives). */
+DARAN_NODISCARD daran_result_t daran_sim_can_attach(daran_sim_can_t *can, daran_sim_bus_t *line);
+
+/* One control tick of the line with its CAN bus: the bus runs to the end of
+ * the tick, every front end polls, then daran_sim_bus_tick(). Call it
+ * instead of daran_sim_bus_tick(). */
+void daran_sim_can_tick(daran_sim_can_t *can);
+
+/* The simulated time of @p ticks control ticks of @p line, in nanoseconds. */
+uint64_t daran_sim_can_tick_ns(const daran_sim_bus_t *line, uint64_t ticks);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DARAN_SIM_CAN_H */
