@@ -4,6 +4,8 @@
  * part of the protocol and is dropped here, before it costs a slot (C21). */
 #include "can_ring.h"
 
+#include <string.h>
+
 #if DARAN_ENABLE_CAN
 
 bool daran_can_receive(daran_can_t *can, const daran_can_frame_t *frame)
@@ -18,9 +20,7 @@ bool daran_can_receive(daran_can_t *can, const daran_can_frame_t *frame)
     }
     daran_can_slot_t *slot = &can->slots[head & DARAN_CAN_RX_MASK];
     slot->id = (uint16_t)frame->id;
-    for (unsigned i = 0; i < 8u; i++) {
-        slot->data[i] = frame->data[i];
-    }
+    memcpy(slot->data, frame->data, sizeof slot->data);
     DARAN_STORE_RELEASE(&can->head, (uint16_t)(head + 1u));
     return true;
 }
