@@ -77,11 +77,13 @@ void daran_sim_can_tick(daran_sim_can_t *can)
 {
     daran_sim_bus_t *line = can->line;
     uint32_t i;
-    (void)daran_sim_can_bus_run(&can->wire, daran_sim_can_tick_ns(line, line->ticks + 1u));
+    daran_sim_bus_tick(line);
+    /* what crossed the bus during the tick runs at its end, as an ASCII line
+     * does: its effect starts with the next tick */
+    (void)daran_sim_can_bus_run(&can->wire, daran_sim_can_tick_ns(line, line->ticks));
     for (i = 0; i < line->count; i++) {
         (void)daran_can_poll(&can->front[i]);
     }
-    daran_sim_bus_tick(line);
 }
 
 #else

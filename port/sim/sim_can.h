@@ -8,11 +8,14 @@
  * Drive i (0-based, as in line->node[i]) is node i of the bus; host
  * adapters join after them with daran_sim_can_bus_add_node(&can->wire, ...)
  * and send with daran_sim_can_bus_send(). One control tick
- * (daran_sim_can_tick()) runs the bus to the end of the tick, then each
- * front end's daran_can_poll() (frames run, replies queued at the tick's
- * time), then the line's tick (models, telemetry): the main loop of the
- * example in docs/can.md, once per tick. A frame sent at a tick therefore
- * reaches the other drives' rings during the next tick and runs at its end.
+ * (daran_sim_can_tick()) is the line's tick (models, telemetry), then the
+ * bus running through the same tick (frames land in the rings as a receive
+ * interrupt would put them there meanwhile), then each front end's
+ * daran_can_poll() at the tick's end (frames run, replies queued at that
+ * time): the main loop of the example in docs/can.md, once per tick. A
+ * frame queued at a tick's end therefore crosses the bus during the next
+ * tick, runs at its end, and takes effect from the tick after, as an ASCII
+ * line that arrives between two ticks does.
  *
  * The front ends need a core built with DARAN_ENABLE_CAN (the default).
  * Portable C99: no stdio, no heap; the caller owns the object. */
@@ -61,9 +64,9 @@ extern const daran_can_port_t daran_sim_can_port;
  * port (a core without CAN cannot be attached). O(drives). */
 DARAN_NODISCARD daran_result_t daran_sim_can_attach(daran_sim_can_t *can, daran_sim_bus_t *line);
 
-/* One control tick of the line with its CAN bus: the bus runs to the end of
- * the tick, every front end polls, then daran_sim_bus_tick(). Call it
- * instead of daran_sim_bus_tick(). */
+/* One control tick of the line with its CAN bus: daran_sim_bus_tick(), the
+ * bus runs to the end of the tick, every front end polls. Call it instead
+ * of daran_sim_bus_tick(). */
 void daran_sim_can_tick(daran_sim_can_t *can);
 
 /* The simulated time of @p ticks control ticks of @p line, in nanoseconds. */

@@ -1440,7 +1440,9 @@ static bool valid_value(daran_prop_t prop, daran_value_t value)
     return true;
 }
 
-/* An error register: only 0 goes in, and clears that register alone. */
+/* An error register: only 0 goes in, and clears that register alone; the
+ * one exception is bit 0 of can.error, which the CAN front end sets when
+ * another node sends status frames with this drive's id (C22). */
 static uint32_t *error_register(daran_sim_model_t *m, daran_prop_t prop)
 {
     switch (prop) {
@@ -1460,10 +1462,11 @@ static daran_result_t set_direct(daran_sim_model_t *m, daran_prop_t prop, daran_
 {
     uint32_t *reg = error_register(m, prop);
     if (reg != NULL) {
-        if (value.u32 != 0u) {
+        uint32_t may_set = prop == DARAN_PROP_CAN_ERROR ? *reg | DARAN_SIM_CAN_ERROR_DUPLICATE_ID : 0u;
+        if ((value.u32 & ~may_set) != 0u) {
             return DARAN_ERR_OUT_OF_RANGE;
         }
-        *reg = 0u;
+        *reg = value.u32;
         return DARAN_OK;
     }
     switch (prop) {

@@ -21,6 +21,11 @@
 extern "C" {
 #endif
 
+/* can.error bit 0: another node sends status frames with this drive's id,
+ * set by the CAN front end through the HAL (the project's can.md C22); the
+ * only non-zero value an error register takes. */
+#define DARAN_SIM_CAN_ERROR_DUPLICATE_ID 0x1u
+
 /* Plant constants that are not protocol properties. A test may change them
  * after daran_sim_model_init(). (Phase resistance and the under-voltage trip
  * level are properties: motor.config.phase_resistance and
@@ -101,7 +106,7 @@ typedef struct daran_sim_model {
     uint32_t encoder_error;          /* axis0.encoder.error (nothing in the model sets it) */
     uint32_t fet_thermistor_error;   /* axis0.fet_thermistor.error */
     uint32_t motor_thermistor_error; /* axis0.motor_thermistor.error */
-    uint32_t can_error;              /* can.error (nothing in the model sets it) */
+    uint32_t can_error;              /* can.error: bit 0 set by the CAN front end (C22) */
     uint32_t config_warnings;        /* axis0.config_warnings: DARAN_WARNING_* */
     float stall_s;                   /* how long the stall condition has held */
     bool stall_injected;             /* the stall fault: trip at the next tick */

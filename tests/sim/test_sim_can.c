@@ -167,6 +167,17 @@ static void test_heartbeats_reach_the_others_and_never_their_sender(void)
     TEST_ASSERT_TRUE(can.wire.node[0].received >= 9u); /* drive 2's heartbeats */
 }
 
+/* Another node sending status frames with drive 1's id: drive 1 notes a
+ * duplicate id in can.error bit 0 (C22), drive 2 does not. */
+static void test_a_status_frame_with_a_drives_id_marks_a_duplicate_id(void)
+{
+    static const uint8_t status[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    host_send(1u << 5 | 0x01u, status);
+    ticks(2u);
+    TEST_ASSERT_EQUAL_UINT32(DARAN_SIM_CAN_ERROR_DUPLICATE_ID, line.node[0].sim.model.can_error);
+    TEST_ASSERT_EQUAL_UINT32(0u, line.node[1].sim.model.can_error);
+}
+
 /* The node guard: armed by a frame, it stops the drive when frames stop. */
 static void test_the_node_guard_stops_a_drive_whose_frames_stopped(void)
 {
@@ -268,6 +279,7 @@ int main(void)
     RUN_TEST(test_a_motion_frame_gets_the_status_reply_when_the_drive_is_set_to);
     RUN_TEST(test_a_fast_read_reports_the_position_and_trajectory_done);
     RUN_TEST(test_heartbeats_reach_the_others_and_never_their_sender);
+    RUN_TEST(test_a_status_frame_with_a_drives_id_marks_a_duplicate_id);
     RUN_TEST(test_the_node_guard_stops_a_drive_whose_frames_stopped);
     RUN_TEST(test_a_bus_off_drive_counts_its_frames_as_unsent);
     RUN_TEST(test_a_lost_reply_leaves_the_host_without_an_answer);

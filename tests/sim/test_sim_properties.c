@@ -186,7 +186,7 @@ static void test_error_registers_take_only_zero(void)
     static const daran_prop_t regs[] = {
         DARAN_PROP_AXIS_ERROR,        DARAN_PROP_MOTOR_ERROR,          DARAN_PROP_CONTROLLER_ERROR,
         DARAN_PROP_ENCODER_ERROR,     DARAN_PROP_FET_THERMISTOR_ERROR, DARAN_PROP_MOTOR_THERMISTOR_ERROR,
-        DARAN_PROP_CAN_ERROR,         DARAN_PROP_CONFIG_WARNINGS,
+        DARAN_PROP_CONFIG_WARNINGS,
     };
     size_t i;
     for (i = 0; i < sizeof regs / sizeof regs[0]; i++) {
@@ -196,6 +196,22 @@ static void test_error_registers_take_only_zero(void)
         TEST_ASSERT_EQUAL_INT64(DARAN_ERR_OUT_OF_RANGE, daran_sim_hal.set(&drive, regs[i], v));
         SETU(regs[i], 0u);
     }
+}
+
+/* can.error takes one more value: its bit 0, which the CAN front end sets
+ * when another node claims the drive's id (C22); no other bit goes in. */
+static void test_can_error_takes_the_duplicate_id_bit_and_zero_only(void)
+{
+    daran_value_t v;
+    v.u64 = 0u;
+    v.u32 = 2u;
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_OUT_OF_RANGE, daran_sim_hal.set(&drive, DARAN_PROP_CAN_ERROR, v));
+    SETU(DARAN_PROP_CAN_ERROR, DARAN_SIM_CAN_ERROR_DUPLICATE_ID);
+    TEST_ASSERT_EQUAL_INT64(1u, GET(DARAN_PROP_CAN_ERROR).u32);
+    v.u32 = 3u;
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_OUT_OF_RANGE, daran_sim_hal.set(&drive, DARAN_PROP_CAN_ERROR, v));
+    SETU(DARAN_PROP_CAN_ERROR, 0u);
+    TEST_ASSERT_EQUAL_INT64(0u, GET(DARAN_PROP_CAN_ERROR).u32);
 }
 
 /* Gear ratio g: rotor = output x g. Position 36 deg = 0.1 g turn; 60 r/min =
@@ -465,6 +481,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_every_property_reads_and_every_writable_one_takes_a_new_value);
     RUN_TEST(test_error_registers_take_only_zero);
+    RUN_TEST(test_can_error_takes_the_duplicate_id_bit_and_zero_only);
     RUN_TEST(test_rotor_views_agree_with_the_output_shaft_at_gear_ratio_1);
     RUN_TEST(test_rotor_views_agree_with_the_output_shaft_at_gear_ratio_8);
     RUN_TEST(test_a_view_that_overflows_its_stored_value_is_refused);
