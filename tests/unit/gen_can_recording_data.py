@@ -9,6 +9,10 @@ Check that the committed header is current (exit status 1 and a diff when not):
   tests/unit/gen_can_recording_data.py --check ../shared/recordings tests/unit/can_recording_data.h
 (the folder holds the .txt files; default /work/shared/recordings).
 
+Write the seed corpus of the CAN fuzz harness (tests/fuzz/fuzz_can.c) from
+the same recording, into tests/corpus/can (files named by their SHA-1):
+  tests/unit/gen_can_recording_data.py --fuzz-seeds tests/corpus/can ../shared/recordings
+
 Each frame line is "<python call>\\t<id, 3 hex digits>\\t<data bytes, hex>"; '#'
 lines are comments. A frame is a standard data frame with DLC 8 unless the
 comment line just before it says "the next frame has DLC N". The comment
@@ -17,6 +21,7 @@ passes (the second one with enable_reply_state 1 on every drive). The header
 comment's "Frames: N" is checked against the frames found.
 """
 import difflib
+import hashlib
 import os
 import re
 import sys
@@ -96,8 +101,58 @@ def header(folder):
     return "\n".join(out) + "\n"
 
 
+# fuzz_can.c's input: 4 setup bytes (id, flags, heartbeat_ms, timeout_ms),
+# then 12 bytes a frame (id low, id high and flags, DLC and batching, the
+# milliseconds before it, 8 data bytes).
+def fuzz_record(can_id, dlc, data, advance_ms, batch=False):
+    dlc_byte = (0 if dlc == 8 else 0x80 | dlc) | (0x40 if batch else 0)
+    return bytes([can_id & 0xFF, (can_id >> 8) & 0x07, dlc_byte, advance_ms & 0xFF]) + bytes(data)
+
+
+def fuzz_seeds(folder):
+    """The recording as sessions of fuzz_can.c: every drive, the settings that
+    change what a drive sends (replies, heartbeat, node guard), the states
+    that refuse motion, a full ring, protocol 0."""
+    rows = frames(os.path.join(folder, RECORDING))
+    # (node id, setup flags, heartbeat_ms, timeout_ms, ms between frames, frames batched)
+    sessions = [
+        (1, 0x00, 0, 0, 1, 1), (2, 0x00, 0, 0, 1, 1), (3, 0x00, 0, 0, 1, 1),
+        (1, 0x04, 0, 0, 1, 1), (2, 0x04, 10, 50, 20, 1), (3, 0x08, 0, 100, 3, 1),
+        (1, 0x02, 0, 0, 1, 1), (2, 0x03, 0, 0, 1, 1), (1, 0x01, 25, 0, 7, 1),
+        (1, 0x20, 5, 0, 2, 1), (2, 0x90, 1, 0, 1, 1), (1, 0x40, 10, 10, 5, 1),
+        (1, 0x04, 0, 0, 0, 12), (2, 0x00, 0, 200, 1, 5),
+    ]
+    # two halves, split between calls, so that a seed fits the fuzzer's
+    # -max_len of 2048 bytes (tools/ci.d/40-fuzz.sh)
+    middle = len(rows) // 2
+    while rows[middle][0] == rows[middle - 1][0]:
+        middle += 1
+    seeds = []
+    for node, flags, heartbeat, timeout, advance, batch in sessions:
+        for part in (rows[:middle], rows[middle:]):
+            data = bytes([node - 1, flags, heartbeat, timeout])
+            for i, (_call, _pass, can_id, dlc, payload) in enumerate(part):
+                data += fuzz_record(can_id, dlc, payload, advance, batch > 1 and (i + 1) % batch != 0)
+            seeds.append(data)
+    # each call of the recording alone, for drive 1 with replies on
+    calls = {}
+    for call, _pass, can_id, dlc, payload in rows:
+        calls.setdefault(call, []).append(fuzz_record(can_id, dlc, payload, 1))
+    for records in calls.values():
+        seeds.append(bytes([0, 0x04, 0, 0]) + b"".join(records))
+    return seeds
+
+
 def main():
     args = sys.argv[1:]
+    if args and args[0] == "--fuzz-seeds":
+        out = args[1]
+        folder = args[2] if len(args) > 2 else "/work/shared/recordings"
+        os.makedirs(out, exist_ok=True)
+        for seed in fuzz_seeds(folder):
+            with open(os.path.join(out, hashlib.sha1(seed).hexdigest()), "wb") as f:
+                f.write(seed)
+        return 0
     check = bool(args) and args[0] == "--check"
     if check:
         args = args[1:]

@@ -1221,7 +1221,7 @@ static void test_the_status_frame_rounds_near_half_counts_to_the_nearest(void)
     }
     if (wrong != 0u) {
         TEST_FAIL_MESSAGE_F("%u of %u values were not rounded to the nearest count, the first %.9g "
-                            "(x 100 = %.9f exactly; sent %d, nearest %d)",
+                            "(x 100 = %.12g; sent %d, nearest %d)",
                             (unsigned)wrong, 7u * 32767u, (double)first_wrong, (double)first_wrong * 100.0,
                             (int)scaled_of(first_wrong) + 1, (int)scaled_of(first_wrong));
     }
