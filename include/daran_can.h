@@ -78,6 +78,7 @@ typedef struct daran_can {
     daran_atomic_u32_t dropped; /* frames lost to a full ring; the producer's */
     uint32_t last_frame_ms;     /* the node guard: when the last frame for this drive came */
     uint32_t heartbeat_ms;      /* when the last heartbeat went out */
+    uint32_t kept_ms;           /* when the guard and the heartbeat were last looked at */
     uint32_t unsent;            /* replies and status frames the port could not send */
     uint8_t enabled;            /* can.config.protocol was 1 at daran_can_init() */
     uint8_t guard_armed;        /* a frame for this drive came since boot (C16) */

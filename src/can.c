@@ -376,6 +376,7 @@ daran_result_t daran_can_init(daran_can_t *can, daran_drive_t *drive, const dara
     daran_result_t result = daran_get(drive, DARAN_PROP_CAN_PROTOCOL, &protocol);
     can->enabled = result != DARAN_OK || protocol.u32 == 1u;
     can->heartbeat_ms = port->now_ms(port_ctx);
+    can->kept_ms = can->heartbeat_ms - 1u; /* the first poll looks */
     return DARAN_OK;
 }
 
@@ -410,7 +411,10 @@ size_t daran_can_poll(daran_can_t *can)
         }
         daran_can_release(can);
     }
-    if (can->enabled) {
+    /* Once a millisecond is enough: neither can fall due again before the
+     * clock moves, and a poll of a fast control loop spares two HAL reads. */
+    if (can->enabled && now != can->kept_ms) {
+        can->kept_ms = now;
         keep_time(can, now);
 #if DARAN_ENABLE_CAN_BRIDGE
         if (can->bridge != NULL) {

@@ -1,7 +1,8 @@
-/* Properties by CAN address: the last column of the property list, grouped
- * by the generator into can_index.h by the address's high byte (the vendor's
- * addresses come in blocks), found by a walk over the groups and then over
- * the group's low bytes. */
+/* Properties by CAN address: the last column of the property list, kept by
+ * the generator in can_index.h as runs of consecutive properties whose
+ * addresses share their high byte (the vendor numbers a family of paths in
+ * a block) and each property's low byte: a frame's property is found by a
+ * walk over the runs of its high byte. */
 #include "can.h"
 
 #if DARAN_ENABLE_CAN
@@ -12,17 +13,25 @@ bool daran_can_property_at(uint16_t address, daran_prop_t *prop)
 {
 #if DARAN_CAN_ROWS > 0
     unsigned high = (unsigned)address >> 8;
-    for (unsigned group = 0; group < DARAN_CAN_GROUPS && can_group_high[group] <= high; group++) {
-        if (can_group_high[group] != high) {
-            continue;
+    /* the first run of that high byte: runs are in the order of theirs */
+    unsigned low_run = 0;
+    unsigned past = DARAN_CAN_RUNS;
+    while (low_run < past) {
+        unsigned middle = (low_run + past) / 2u;
+        if (can_run_high[middle] < high) {
+            low_run = middle + 1u;
+        } else {
+            past = middle;
         }
-        for (unsigned row = can_group_first[group]; row < can_group_first[group + 1u]; row++) {
-            if (can_low[row] == (address & 0xFFu)) {
-                *prop = (daran_prop_t)can_property[row];
+    }
+    for (unsigned run = low_run; run < DARAN_CAN_RUNS && can_run_high[run] == high; run++) {
+        unsigned first = can_run_first[run];
+        for (unsigned p = first; p < first + can_run_count[run]; p++) {
+            if (can_low[p] == (address & 0xFFu)) {
+                *prop = (daran_prop_t)p;
                 return true;
             }
         }
-        break;
     }
 #else
     (void)address;
@@ -35,11 +44,9 @@ bool daran_can_property_at(uint16_t address, daran_prop_t *prop)
 uint16_t daran_can_address_of(daran_prop_t prop)
 {
 #if DARAN_CAN_ROWS > 0
-    for (unsigned group = 0; group < DARAN_CAN_GROUPS; group++) {
-        for (unsigned row = can_group_first[group]; row < can_group_first[group + 1u]; row++) {
-            if (can_property[row] == (unsigned)prop) {
-                return (uint16_t)(can_group_high[group] << 8 | can_low[row]);
-            }
+    for (unsigned run = 0; run < DARAN_CAN_RUNS; run++) {
+        if ((unsigned)prop - can_run_first[run] < can_run_count[run]) {
+            return (uint16_t)(can_run_high[run] << 8 | can_low[prop]);
         }
     }
 #else
