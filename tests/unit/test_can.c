@@ -23,13 +23,16 @@
 
 /* ---- the test port ---- */
 
-#define BUS_SENT_MAX 32
+/* a full ring of reads, and then some */
+#define BUS_SENT_MAX (DARAN_CAN_RX_FRAMES > 32 ? DARAN_CAN_RX_FRAMES + 8 : 40)
 
 typedef struct bus {
     daran_can_frame_t sent[BUS_SENT_MAX];
     size_t calls_before[BUS_SENT_MAX]; /* HAL calls the drive had made when each went out */
     size_t n_sent;
     bool refuse;      /* the controller takes nothing (bus-off) */
+    bool forget_calls; /* each frame sent clears the drive's call log (a ring of reads
+                          outgrows it) */
     size_t n_refused; /* transmissions refused */
     uint32_t now_ms;
     size_t n_hook;
@@ -56,6 +59,9 @@ static bool bus_send(void *ctx, const daran_can_frame_t *frame)
     b->sent[b->n_sent] = *frame;
     b->calls_before[b->n_sent] = b->mock->n_calls;
     b->n_sent++;
+    if (b->forget_calls) {
+        mock_clear(b->mock);
+    }
     return true;
 }
 
@@ -1120,12 +1126,13 @@ static void test_every_address_of_the_list_is_read_with_its_type_and_value(void)
 
 static void test_an_address_outside_the_list_is_never_answered(void)
 {
-    /* every address, eight frames a poll */
-    for (uint32_t first = 1; first <= 0xFFFFu; first += 8u) {
+    /* every address, up to eight frames a poll */
+    const uint32_t batch = DARAN_CAN_RX_FRAMES < 8 ? DARAN_CAN_RX_FRAMES : 8u;
+    for (uint32_t first = 1; first <= 0xFFFFu; first += batch) {
         mock_clear(m);
         bus.n_sent = 0;
         size_t expected = 0;
-        for (uint32_t address = first; address < first + 8u && address <= 0xFFFFu; address++) {
+        for (uint32_t address = first; address < first + batch && address <= 0xFFFFu; address++) {
             daran_can_frame_t frame = READ_FRAME(1, address, 3);
             TEST_ASSERT_TRUE(daran_can_receive(&can, &frame));
             expected += row_at(address) != NULL;
@@ -2002,7 +2009,9 @@ static void expect_replies_in_order(const uint32_t *addresses, size_t count)
 {
     mock_clear(m);
     bus.n_sent = 0;
+    bus.forget_calls = true;
     TEST_ASSERT_EQUAL_UINT(count, daran_can_poll(&can));
+    bus.forget_calls = false;
     TEST_ASSERT_EQUAL_UINT(count, bus.n_sent);
     for (size_t i = 0; i < count; i++) {
         TEST_ASSERT_EQUAL_HEX16(addresses[i], get_u16(bus.sent[i].data));
@@ -2053,14 +2062,15 @@ static void test_frames_wrap_around_the_ring_in_order(void)
 static void test_the_ring_indices_wrap_past_65536_frames(void)
 {
     daran_can_frame_t other = READ_FRAME(2, 31001, 3);
-    for (uint32_t n = 0; n < 65536u + 3u; n += DARAN_CAN_RX_FRAMES) {
+    uint32_t rounds = 0;
+    for (uint32_t n = 0; n < 65536u + 3u; n += DARAN_CAN_RX_FRAMES, rounds++) {
         for (size_t i = 0; i < DARAN_CAN_RX_FRAMES; i++) {
             TEST_ASSERT_TRUE(daran_can_receive(&can, &other));
         }
         TEST_ASSERT_FALSE(daran_can_receive(&can, &other));
         TEST_ASSERT_EQUAL_UINT(DARAN_CAN_RX_FRAMES, daran_can_poll(&can));
     }
-    TEST_ASSERT_EQUAL_UINT32(65536u / DARAN_CAN_RX_FRAMES + 1u, daran_can_dropped(&can));
+    TEST_ASSERT_EQUAL_UINT32(rounds, daran_can_dropped(&can)); /* one a round */
     uint32_t expected[DARAN_CAN_RX_FRAMES];
     for (size_t i = 0; i < DARAN_CAN_RX_FRAMES; i++) {
         expected[i] = some_addresses[(i * 5u) % 16u];
