@@ -1,11 +1,24 @@
-"""What the CAN pty tests share: daran-sim started with its adapters, the
-pseudo-terminal paths it prints, its stdout (the console's `can ...` lines)
-read in the background so it never fills, little-endian helpers, and the end
-by SIGTERM. Used by pty_slcan.py and pty_usbcan.py (stdlib only)."""
+"""What the CAN pty tests share: a module or a skip (exit 77), daran-sim
+started with its adapters, the pseudo-terminal paths it prints, its stdout
+(the console's `can ...` lines) read in the background so it never fills,
+little-endian helpers, the end by SIGTERM and the verdict. Used by
+pty_slcan.py, pty_usbcan.py and pty_can_links.py (stdlib only)."""
+import importlib
 import os
 import struct
 import subprocess
+import sys
 import threading
+
+
+def require(module, package):
+    """@module imported, or the test skipped (exit 77) when @package is
+    not installed."""
+    try:
+        return importlib.import_module(module)
+    except ImportError:
+        print("%s is not installed: skipped" % package)
+        sys.exit(77)
 
 
 class Sim:
@@ -44,10 +57,6 @@ class Sim:
         return self.proc.returncode in (-15, 143)
 
 
-def have_ptys():
-    return os.path.exists("/dev/ptmx")
-
-
 def f32(data, at=0):
     return struct.unpack_from("<f", bytes(data), at)[0]
 
@@ -65,7 +74,22 @@ FAST_READ = bytes(8)
 T_90 = bytes.fromhex("0000b4420000e803")
 
 
-def report(name, failures, stopped):
+def run(name, options, ptys, checks):
+    """A whole test: daran-sim (argv[1]) started with @options, printing
+    @ptys paths; @checks(sim, failures) run on it; daran-sim stopped by
+    SIGTERM. Returns the exit status (77: no pseudo-terminals here)."""
+    if not os.path.exists("/dev/ptmx"):
+        print("no /dev/ptmx on this machine: skipped")
+        return 77
+    sim = Sim(sys.argv[1], options, ptys)
+    failures = []
+    try:
+        if all(p.startswith("/dev/") for p in sim.paths):
+            checks(sim, failures)
+        else:
+            failures.append("no pty paths on stdout: %r" % sim.paths)
+    finally:
+        stopped = sim.stop()
     for failure in failures:
         print("FAIL:", failure)
     if not stopped:
