@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "can_recording_data.h"
+#include "float_bits.h"
 #include "mock_hal.h"
 
 #if DARAN_ENABLE_CAN
@@ -123,20 +124,6 @@ static void put_u32(uint8_t *bytes, uint32_t value)
     put_u16(bytes + 2, value >> 16);
 }
 
-static uint32_t bits_of(float value)
-{
-    uint32_t bits;
-    memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
-
-static float float_of(uint32_t bits)
-{
-    float value;
-    memcpy(&value, &bits, sizeof value);
-    return value;
-}
-
 static uint16_t get_u16(const uint8_t *bytes)
 {
     return (uint16_t)(bytes[0] | bytes[1] << 8);
@@ -175,7 +162,7 @@ static daran_can_frame_t motion_frame(uint32_t node, uint32_t code, float value,
     memset(&frame, 0, sizeof frame);
     frame.id = node << 5 | code;
     frame.dlc = 8;
-    put_u32(frame.data, bits_of(value));
+    put_u32(frame.data, daran_bits_of(value));
     put_u16(frame.data + 4, (uint32_t)raw4);
     put_u16(frame.data + 6, (uint32_t)raw6);
     return frame;
@@ -508,7 +495,7 @@ static size_t effects_of(const mock_t *drive, const mock_call_t **out, size_t ma
 
 static bool same_float(float a, float b)
 {
-    return bits_of(a) == bits_of(b);
+    return daran_bits_of(a) == daran_bits_of(b);
 }
 
 static bool same_call(const mock_call_t *a, const mock_call_t *b)
@@ -815,21 +802,21 @@ static void run_twin_row(const void *arg)
 
 /* A read frame and `r` give the same value (C7: in the property's own type). */
 typedef struct read_twin_row {
-    uint32_t address;
     const char *line;
+    uint32_t address;
 } read_twin_row_t;
 
 static const read_twin_row_t read_twin_rows[] = {
-    {1, "r vbus_voltage 1"},
-    {10001, "r config.uart_baudrate 1"},
-    {33108, "r axis1.motor.config.direction"},
-    {31214, "r axis1.config.extra_setting.enable_reply_state"},
-    {6, "r fw_version 1"},
-    {3, "r serial_number_l 1"},
-    {4, "r serial_number_h 1"},
-    {38007, "r axis1.output_shaft.pos_estimate"},
-    {32008, "r axis1.controller.trajectory_done"},
-    {50002, "r axis1.config.watchdog_timeout"},
+    {"r vbus_voltage 1", 1},
+    {"r config.uart_baudrate 1", 10001},
+    {"r axis1.motor.config.direction", 33108},
+    {"r axis1.config.extra_setting.enable_reply_state", 31214},
+    {"r fw_version 1", 6},
+    {"r serial_number_l 1", 3},
+    {"r serial_number_h 1", 4},
+    {"r axis1.output_shaft.pos_estimate", 38007},
+    {"r axis1.controller.trajectory_done", 32008},
+    {"r axis1.config.watchdog_timeout", 50002},
 };
 
 static void run_read_twin_row(const void *arg)
@@ -859,7 +846,7 @@ static void run_read_twin_row(const void *arg)
     uint32_t value = get_u32(reply->data + 4);
     switch (prop->type) {
     case DARAN_TYPE_F32:
-        TEST_ASSERT_EQUAL_HEX32(bits_of(strtof(text, NULL)), value);
+        TEST_ASSERT_EQUAL_HEX32(daran_bits_of(strtof(text, NULL)), value);
         break;
     case DARAN_TYPE_S32:
         TEST_ASSERT_EQUAL_INT32((int32_t)strtol(text, NULL, 10), (int32_t)value);
@@ -1015,12 +1002,12 @@ static void test_c3_the_libraries_truncated_values_arrive_as_sent(void)
     /* set_speed(1, 20, 1.15): 114 (1.14 Nm); set_angle(2, 10, 0.29, 0.57, 2): 28, 56 */
     deliver(frame_hex(0x03C, "00 00 a0 41 72 00 01 00"));
     const daran_move_t *move = EXPECT_MOVE();
-    TEST_ASSERT_EQUAL_HEX32(bits_of(1.14f), bits_of(move->torque_nm));
+    TEST_ASSERT_EQUAL_HEX32(daran_bits_of(1.14f), daran_bits_of(move->torque_nm));
     start_drive(2);
     deliver(frame_hex(0x05B, "00 00 20 41 1c 00 38 00"));
     move = EXPECT_MOVE();
-    TEST_ASSERT_EQUAL_HEX32(bits_of(0.28f), bits_of(move->vel_rpm));
-    TEST_ASSERT_EQUAL_HEX32(bits_of(0.56f), bits_of(move->torque_nm));
+    TEST_ASSERT_EQUAL_HEX32(daran_bits_of(0.28f), daran_bits_of(move->vel_rpm));
+    TEST_ASSERT_EQUAL_HEX32(daran_bits_of(0.56f), daran_bits_of(move->torque_nm));
 }
 
 /* ---- C6, C7, C25: type codes ---- */
@@ -1161,6 +1148,7 @@ static void test_c8_a_broadcast_read_is_answered_with_the_own_id(void)
 /* ---- 2.7: the status frame ---- */
 
 typedef struct status_case {
+    const char *what;
     uint32_t node;
     float pos, vel, torque;
     uint32_t done, error, warnings;
@@ -1169,14 +1157,14 @@ typedef struct status_case {
 } status_case_t;
 
 static const status_case_t status_cases[] = {
-    {3, 90.0f, 12.34f, -0.5f, 1, 0, 0, 0x063, "00 00 b4 42 d2 04 ce ff"},
-    {1, -92.46918f, 400.0f, -400.0f, 0, DARAN_FLAG_ESTOP, 0, 0x025, "38 f0 b8 c2 ff 7f 00 80"},
-    {1, 0.0f, 327.67f, -327.68f, 1, 1, 0, 0x027, "00 00 00 00 ff 7f 00 80"},
-    {1, 1.0f, 0.125f, -0.125f, 0, 0, DARAN_WARNING_NVM_CORRUPT, 0x021, "00 00 80 3f 0d 00 f3 ff"},
-    {63, -0.0f, 0.004f, -0.006f, 1, 0, 0, 0x7E3, "00 00 00 80 00 00 ff ff"},
-    {2, 1e30f, 1e30f, -1e30f, 1, 0, 0, 0x043, "ca f2 49 71 ff 7f 00 80"},
-    {2, 0.0f, INFINITY, -INFINITY, 0, 0, 0, 0x041, "00 00 00 00 ff 7f 00 80"},
-    {2, 0.0f, 327.675f, -327.675f, 0, 0, 0, 0x041, "00 00 00 00 ff 7f 01 80"},
+    {"the worked example of 6.6", 3, 90.0f, 12.34f, -0.5f, 1, 0, 0, 0x063, "00 00 b4 42 d2 04 ce ff"},
+    {"the e-stop, saturated fields", 1, -92.46918f, 400.0f, -400.0f, 0, DARAN_FLAG_ESTOP, 0, 0x025, "38 f0 b8 c2 ff 7f 00 80"},
+    {"327.67 and -327.68, a fault bit", 1, 0.0f, 327.67f, -327.68f, 1, 1, 0, 0x027, "00 00 00 00 ff 7f 00 80"},
+    {"ties away from zero, a warning is no error", 1, 1.0f, 0.125f, -0.125f, 0, 0, DARAN_WARNING_NVM_CORRUPT, 0x021, "00 00 80 3f 0d 00 f3 ff"},
+    {"-0 and small values at node 63", 63, -0.0f, 0.004f, -0.006f, 1, 0, 0, 0x7E3, "00 00 00 80 00 00 ff ff"},
+    {"beyond the field, saturated", 2, 1e30f, 1e30f, -1e30f, 1, 0, 0, 0x043, "ca f2 49 71 ff 7f 00 80"},
+    {"infinities saturated", 2, 0.0f, INFINITY, -INFINITY, 0, 0, 0, 0x041, "00 00 00 00 ff 7f 00 80"},
+    {"just below the field's ends", 2, 0.0f, 327.675f, -327.675f, 0, 0, 0, 0x041, "00 00 00 00 ff 7f 01 80"},
 };
 
 static void run_status_case(const void *arg)
@@ -2096,7 +2084,7 @@ static void test_unsent_counts_the_frames_the_port_refused(void)
     TEST_ASSERT_EQUAL_UINT32(4, daran_can_unsent(&can));
     TEST_ASSERT_EQUAL_UINT(4, bus.n_refused);
     /* frames nothing answers do not count */
-    deliver(WRITE_FRAME(1, 32108, 0, bits_of(2.0f)));
+    deliver(WRITE_FRAME(1, 32108, 0, daran_bits_of(2.0f)));
     TEST_ASSERT_EQUAL_UINT32(4, daran_can_unsent(&can));
     bus.refuse = false;
     deliver(READ_FRAME(1, 1, 0));
@@ -2188,7 +2176,7 @@ static bool write_line(char *line, size_t size, uint32_t node, const daran_can_f
     char value[48];
     switch (type) {
     case 0:
-        text_f32(value, sizeof value, float_of(bits));
+        text_f32(value, sizeof value, daran_float_of(bits));
         break;
     case 1:
         snprintf(value, sizeof value, "%u", (unsigned)(bits & 0xFFFFu));
@@ -2236,7 +2224,7 @@ static size_t twin_lines(const daran_can_frame_t *frame, uint32_t id, const pend
     uint32_t node = frame->id >> 5, code = frame->id & 0x1Fu;
     const uint8_t *d = frame->data;
     char f[48], a[16], b[16];
-    text_f32(f, sizeof f, float_of(get_u32(d)));
+    text_f32(f, sizeof f, daran_float_of(get_u32(d)));
     text_scaled(a, sizeof a, (int16_t)get_u16(d + 4));
     text_scaled(b, sizeof b, (int16_t)get_u16(d + 6));
     *timed = false;
@@ -2360,7 +2348,7 @@ static void replay_frame(const can_recorded_frame_t *rec, uint32_t id, mock_t *t
         counts->refused += twin_refused;
     }
     if (code == 0x0Cu && DARAN_ENABLE_MULTI_MOTOR) {
-        float p1 = float_of(get_u32(frame.data));
+        float p1 = daran_float_of(get_u32(frame.data));
         TEST_ASSERT_TRUE_MESSAGE(isfinite(p1), rec->call);
         pending->held = true;
         pending->p1 = p1;
@@ -2431,6 +2419,16 @@ static void test_the_recording_has_176_frames_the_first_with_dlc_0(void)
 
 static mock_suite_t suite;
 
+/* One case a table row; every row type begins with the row's name. */
+static void add_rows(mock_row_fn fn, const void *rows, size_t count, size_t size, const char *prefix)
+{
+    for (size_t i = 0; i < count; i++) {
+        const void *row = (const char *)rows + i * size;
+        mock_suite_add(&suite, fn, row, "%s: %s", prefix, *(const char *const *)row);
+    }
+}
+#define ADD_ROWS(fn, rows, prefix) add_rows((fn), (rows), sizeof(rows) / sizeof((rows)[0]), sizeof((rows)[0]), (prefix))
+
 int main(void)
 {
     static const uint32_t drive_ids[] = {1, 2, 3};
@@ -2451,26 +2449,11 @@ int main(void)
         mock_suite_add(&suite, run_recording_through_drive, &drive_ids[i],
                        "test_every_recorded_frame_runs_on_drive_%u_as_its_ascii_twin", (unsigned)drive_ids[i]);
     }
-    for (size_t i = 0; i < sizeof twin_rows / sizeof twin_rows[0]; i++) {
-        mock_suite_add(&suite, run_twin_row, &twin_rows[i], "test_frame_and_line_make_the_same_calls: %s",
-                       twin_rows[i].what);
-    }
-    for (size_t i = 0; i < sizeof read_twin_rows / sizeof read_twin_rows[0]; i++) {
-        mock_suite_add(&suite, run_read_twin_row, &read_twin_rows[i],
-                       "test_a_read_frame_answers_what_r_answers: %s", read_twin_rows[i].line);
-    }
-    for (size_t i = 0; i < sizeof write_cases / sizeof write_cases[0]; i++) {
-        mock_suite_add(&suite, run_write_case, &write_cases[i], "test_c6_c25_write_type_codes: %s",
-                       write_cases[i].what);
-    }
-    for (size_t i = 0; i < sizeof refused_rows / sizeof refused_rows[0]; i++) {
-        mock_suite_add(&suite, run_refused_row, &refused_rows[i],
-                       "test_a_refused_frame_only_feeds_and_gets_no_reply: %s", refused_rows[i].what);
-    }
-    for (size_t i = 0; i < sizeof status_cases / sizeof status_cases[0]; i++) {
-        mock_suite_add(&suite, run_status_case, &status_cases[i], "test_the_status_frame_layout: case %u",
-                       (unsigned)i + 1u);
-    }
+    ADD_ROWS(run_twin_row, twin_rows, "test_frame_and_line_make_the_same_calls");
+    ADD_ROWS(run_read_twin_row, read_twin_rows, "test_a_read_frame_answers_what_r_answers");
+    ADD_ROWS(run_write_case, write_cases, "test_c6_c25_write_type_codes");
+    ADD_ROWS(run_refused_row, refused_rows, "test_a_refused_frame_only_feeds_and_gets_no_reply");
+    ADD_ROWS(run_status_case, status_cases, "test_the_status_frame_layout");
     mock_suite_run(&suite);
     RUN_TEST(test_c1_velocity_modes_read_raw_or_times_100_in_both_places);
     RUN_TEST(test_c1_torque_modes_read_raw_or_times_100_and_2_as_6_in_both_places);
