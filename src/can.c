@@ -4,6 +4,7 @@
  * of the contract are cited where they decide). A frame is decoded and
  * checked whole before any request runs, and a refused frame has no effect:
  * CAN has no error reply, so the refusal is silence. */
+#include <stddef.h>
 #include <string.h>
 
 #include "bridge.h"
@@ -14,6 +15,22 @@
 #include "handlers.h"
 
 #if DARAN_ENABLE_CAN
+
+int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
+{
+    float scaled = value * 100.0f;
+    scaled += scaled < 0.0f ? -0.5f : 0.5f;
+    int32_t raw = -32768; /* and NaN */
+    int fits = 0;
+    if (scaled >= 32768.0f) {
+        raw = 32767;
+    } else if (scaled > -32769.0f) {
+        raw = (int32_t)scaled;
+        fits = 1;
+    }
+    daran_can_put_u16(bytes, (uint32_t)raw);
+    return saturate || fits;
+}
 
 /* ---- what the drive sends ---- */
 
@@ -363,8 +380,9 @@ daran_result_t daran_can_init(daran_can_t *can, daran_drive_t *drive, const dara
         port->now_ms == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
+    /* every member but the slots, which the producer fills before use */
     unsigned char *raw = (unsigned char *)can;
-    for (size_t i = 0; i < sizeof *can; i++) {
+    for (size_t i = 0; i < offsetof(daran_can_t, slots); i++) {
         raw[i] = 0;
     }
     can->drive = drive;

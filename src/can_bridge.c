@@ -5,8 +5,6 @@
  * waits, daran_poll() reads no further line (C32). Frames go out when the
  * line is taken: a transmit the port refuses is `error: bus error` at once
  * (docs/can.md, "The bridge", says why there is no retry). */
-#include <math.h>
-
 #include "bridge.h"
 #include "can.h"
 #include "can_bytes.h"
@@ -31,10 +29,8 @@ daran_result_t daran_can_bridge_init(daran_can_bridge_t *bridge, daran_can_t *ca
     if (bridge == NULL || can == NULL || can->drive == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
-    unsigned char *raw = (unsigned char *)bridge;
-    for (size_t i = 0; i < sizeof *bridge; i++) {
-        raw[i] = 0;
-    }
+    /* nothing pending; every other member is written before it is read */
+    bridge->count = 0;
     bridge->can = can;
     can->bridge = bridge;
     can->drive->bridge = bridge;
@@ -154,17 +150,13 @@ static daran_result_t answer(daran_can_bridge_t *bridge)
     }
     case ANSWER_TRAPEZOID: {
         /* the omitted cruise velocity and acceleration, as the remote keeps
-         * them (C37), after the values the line gave */
+         * them (C37): the reads are the velocity (when the line gave only a
+         * position) and the acceleration, in that order */
         uint8_t data[8];
-        uint8_t read = 0;
         daran_can_put_f32(data, bridge->values[0]);
-        for (uint8_t i = 1; i < 3u; i++) {
-            float value = bridge->values[i];
-            if (value != value) { /* NaN marks an omitted value */
-                value = values[read++].f32;
-            }
-            (void)daran_can_put_scaled(data + 2u + 2u * i, value, 1);
-        }
+        float vel = bridge->given == 2u ? bridge->values[1] : values[0].f32;
+        (void)daran_can_put_scaled(data + 4, vel, 1);
+        (void)daran_can_put_scaled(data + 6, values[bridge->count - 1u].f32, 1);
         return send_or_fail(bridge, bridge->node, DARAN_CAN_TRAPEZOID, data);
     }
     case ANSWER_SERIAL:
@@ -328,8 +320,6 @@ static daran_result_t send_motion(daran_can_bridge_t *bridge, daran_shape_t shap
             if (count == 2u && !daran_can_put_scaled(data + 4, values[1], 0)) {
                 return DARAN_ERR_OUT_OF_RANGE;
             }
-            values[1] = count == 2u ? values[1] : NAN; /* NaN: read it from the drive */
-            values[2] = NAN;
             return ask(bridge, node, ANSWER_TRAPEZOID, limits + (count - 1u), (uint8_t)(3u - count));
         }
         result = put_scaled_pair(data, values[1], values[2]);

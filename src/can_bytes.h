@@ -53,19 +53,8 @@ static inline void daran_can_put_f32(uint8_t *bytes, float value)
 
 /* value x 100 rounded to the nearest, ties away from zero (C3): false when
  * it leaves the s16 range, unless @p saturate, which clamps it (a status
- * frame's fields, 2.7; `t`'s ignored velocity, C3). NaN is 0. */
-static inline int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
-{
-    float scaled = value * 100.0f;
-    scaled += scaled < 0.0f ? -0.5f : 0.5f;
-    if (!(scaled > -32769.0f && scaled < 32768.0f)) {
-        if (!saturate) {
-            return 0;
-        }
-        scaled = scaled < 0.0f ? -32768.0f : (scaled > 0.0f ? 32767.0f : 0.0f);
-    }
-    daran_can_put_u16(bytes, (uint32_t)(int32_t)scaled);
-    return 1;
-}
+ * frame's fields, 2.7; `t`'s ignored velocity, C3); NaN saturates low. One copy, in
+ * can.c, for the front end and the bridge. */
+int daran_can_put_scaled(uint8_t *bytes, float value, int saturate);
 
 #endif /* DARAN_CAN_BYTES_H */
