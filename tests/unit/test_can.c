@@ -155,6 +155,12 @@ static daran_can_frame_t frame_hex(uint32_t id, const char *hex)
     return frame;
 }
 
+/* A frame written out: its id and its hex bytes. */
+typedef struct hex_frame {
+    uint32_t id;
+    const char *hex;
+} hex_frame_t;
+
 /* 0x00C, 0x019..0x01D: f32 @0, two s16 fields @4 and @6. */
 static daran_can_frame_t motion_frame(uint32_t node, uint32_t code, float value, int32_t raw4, int32_t raw6)
 {
@@ -1236,14 +1242,14 @@ static void test_c10_no_status_reply_without_enable_reply_state(void)
 
 static void test_c10_each_preset_and_direct_motion_gets_one_status_frame_with_reply_state(void)
 {
-    static const char *const frames[][2] = {
-        {"039", "00 00 b4 42 00 00 e8 03"}, {"03a", "00 00 16 c3 e8 03 f4 01"},
-        {"03b", "00 00 f0 41 f4 01 1e 00"}, {"03c", "00 00 a0 41 f4 01 02 00"},
-        {"03d", "00 00 00 3f 00 00 01 00"}, {"02c", "00 00 20 41 00 00 d0 07"},
-        {"019", "00 00 b4 42 00 00 e8 03"}, {"00c", "00 00 20 41 00 00 d0 07"},
+    static const hex_frame_t frames[] = {
+        {0x039, "00 00 b4 42 00 00 e8 03"}, {0x03a, "00 00 16 c3 e8 03 f4 01"},
+        {0x03b, "00 00 f0 41 f4 01 1e 00"}, {0x03c, "00 00 a0 41 f4 01 02 00"},
+        {0x03d, "00 00 00 3f 00 00 01 00"}, {0x02c, "00 00 20 41 00 00 d0 07"},
+        {0x019, "00 00 b4 42 00 00 e8 03"}, {0x00c, "00 00 20 41 00 00 d0 07"},
     };
     for (size_t i = 0; i < sizeof frames / sizeof frames[0]; i++) {
-        bool preset = strcmp(frames[i][0] + 1, "2c") == 0 || strcmp(frames[i][0] + 1, "0c") == 0;
+        bool preset = (frames[i].id & 0x1Fu) == 0x0Cu;
         if (preset && !DARAN_ENABLE_MULTI_MOTOR) {
             continue;
         }
@@ -1251,7 +1257,7 @@ static void test_c10_each_preset_and_direct_motion_gets_one_status_frame_with_re
         m->props[DARAN_PROP_ENABLE_REPLY_STATE].u32 = 1;
         m->props[DARAN_PROP_TRAJECTORY_DONE].u32 = (uint32_t)(i & 1u);
         m->props[DARAN_PROP_POS_ESTIMATE].f32 = 1.5f * (float)i;
-        deliver(frame_hex((uint32_t)strtoul(frames[i][0], NULL, 16), frames[i][1]));
+        deliver(frame_hex(frames[i].id, frames[i].hex));
         if (preset) {
             expect_fed_first(__LINE__);
             TEST_ASSERT_EQUAL_UINT(1, m->n_calls);
@@ -1510,14 +1516,14 @@ static void test_c14_a_new_node_id_applies_at_once_and_0_is_refused(void)
 
 static void expect_silent_front_end(void)
 {
-    static const char *const frames[][2] = {
-        {"039", "00 00 b4 42 00 00 e8 03"}, {"03e", "00 00 00 00 00 00 00 00"},
-        {"03e", "19 79 03 00 00 00 00 00"}, {"03f", "0a 52 03 00 01 00 00 00"},
-        {"028", "06 00 00 00 00 00 00 00"}, {"023", "00 00 00 00 00 00 00 00"},
-        {"02c", "00 00 20 41 00 00 d0 07"}, {"008", "10 00 00 00 00 00 00 00"},
+    static const hex_frame_t frames[] = {
+        {0x039, "00 00 b4 42 00 00 e8 03"}, {0x03e, "00 00 00 00 00 00 00 00"},
+        {0x03e, "19 79 03 00 00 00 00 00"}, {0x03f, "0a 52 03 00 01 00 00 00"},
+        {0x028, "06 00 00 00 00 00 00 00"}, {0x023, "00 00 00 00 00 00 00 00"},
+        {0x02c, "00 00 20 41 00 00 d0 07"}, {0x008, "10 00 00 00 00 00 00 00"},
     };
     for (size_t i = 0; i < sizeof frames / sizeof frames[0]; i++) {
-        deliver(frame_hex((uint32_t)strtoul(frames[i][0], NULL, 16), frames[i][1]));
+        deliver(frame_hex(frames[i].id, frames[i].hex));
         EXPECT_UNTOUCHED();
     }
     /* no heartbeat and no node guard either */
@@ -1685,17 +1691,17 @@ static void test_c17_no_heartbeat_at_period_0(void)
 
 static void test_c18_every_well_formed_frame_for_the_drive_feeds_even_a_refused_one(void)
 {
-    static const char *const frames[][2] = {
-        {"028", "ff 00 00 00 00 00 00 00"}, /* unknown sub-code */
-        {"008", "20 00 00 00 00 00 00 00"}, /* the feed sub-code */
-        {"03a", "00 00 b4 42 00 00 00 00"}, /* q velocity 0 */
-        {"03e", "07 00 00 00 00 00 00 00"}, /* unknown address */
-        {"01f", "19 79 03 00 00 00 00 00"}, /* node id 0 */
-        {"01c", "00 00 a0 41 00 00 09 00"}, /* mode 9, broadcast */
-        {"028", "13 00 00 00 00 00 00 00"}, /* no preset */
+    static const hex_frame_t frames[] = {
+        {0x028, "ff 00 00 00 00 00 00 00"}, /* unknown sub-code */
+        {0x008, "20 00 00 00 00 00 00 00"}, /* the feed sub-code */
+        {0x03a, "00 00 b4 42 00 00 00 00"}, /* q velocity 0 */
+        {0x03e, "07 00 00 00 00 00 00 00"}, /* unknown address */
+        {0x01f, "19 79 03 00 00 00 00 00"}, /* node id 0 */
+        {0x01c, "00 00 a0 41 00 00 09 00"}, /* mode 9, broadcast */
+        {0x028, "13 00 00 00 00 00 00 00"}, /* no preset */
     };
     for (size_t i = 0; i < sizeof frames / sizeof frames[0]; i++) {
-        deliver(frame_hex((uint32_t)strtoul(frames[i][0], NULL, 16), frames[i][1]));
+        deliver(frame_hex(frames[i].id, frames[i].hex));
         EXPECT_ONLY_FED();
     }
 }
@@ -1886,10 +1892,10 @@ static void test_c29_estop_fault_or_idle_no_motion_but_the_status_reply_still_go
     } states[] = {{DARAN_STATE_IDLE, DARAN_FLAG_ESTOP},
                   {DARAN_STATE_CLOSED_LOOP, DARAN_FLAG_MOTOR_FAILED},
                   {DARAN_STATE_IDLE, 0}};
-    static const char *const motions[][2] = {
-        {"039", "00 00 b4 42 00 00 e8 03"}, {"03a", "00 00 16 c3 e8 03 f4 01"},
-        {"03b", "00 00 f0 41 f4 01 1e 00"}, {"03c", "00 00 a0 41 f4 01 02 00"},
-        {"03d", "00 00 00 3f 00 00 01 00"}, {"01d", "00 00 00 3f 00 00 01 00"},
+    static const hex_frame_t motions[] = {
+        {0x039, "00 00 b4 42 00 00 e8 03"}, {0x03a, "00 00 16 c3 e8 03 f4 01"},
+        {0x03b, "00 00 f0 41 f4 01 1e 00"}, {0x03c, "00 00 a0 41 f4 01 02 00"},
+        {0x03d, "00 00 00 3f 00 00 01 00"}, {0x01d, "00 00 00 3f 00 00 01 00"},
     };
     for (size_t s = 0; s < sizeof states / sizeof states[0]; s++) {
         for (size_t i = 0; i < sizeof motions / sizeof motions[0]; i++) {
@@ -1897,7 +1903,7 @@ static void test_c29_estop_fault_or_idle_no_motion_but_the_status_reply_still_go
             m->props[DARAN_PROP_CURRENT_STATE].u32 = states[s].state;
             m->props[DARAN_PROP_AXIS_ERROR].u32 = states[s].error;
             m->props[DARAN_PROP_ENABLE_REPLY_STATE].u32 = 1;
-            deliver(frame_hex((uint32_t)strtoul(motions[i][0], NULL, 16), motions[i][1]));
+            deliver(frame_hex(motions[i].id, motions[i].hex));
             TEST_ASSERT_EQUAL_UINT(1, m->n_calls);
             expect_fed_first(__LINE__);
             TEST_ASSERT_EQUAL_UINT(1, bus.n_sent);
