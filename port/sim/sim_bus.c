@@ -89,6 +89,13 @@ void daran_sim_bus_send(daran_sim_bus_t *bus, const char *bytes, size_t len)
     }
 }
 
+void daran_sim_bus_send_to(daran_sim_bus_t *bus, uint32_t index, const char *bytes, size_t len)
+{
+    if (index < bus->count) {
+        feed(&bus->node[index], bytes, len);
+    }
+}
+
 uint32_t daran_sim_bus_collect(daran_sim_bus_t *bus, daran_sim_sink_fn sink, void *ctx)
 {
     uint8_t done[DARAN_SIM_MAX_DRIVES];

@@ -65,6 +65,10 @@ void daran_sim_bus_set_storage(daran_sim_bus_t *bus, uint32_t index,
  * ring (daran_rx_write) and processes the complete lines (daran_poll). */
 void daran_sim_bus_send(daran_sim_bus_t *bus, const char *bytes, size_t len);
 
+/* The same for drive @p index alone (nothing for an index past the
+ * last): a link that reaches one drive, as a gateway's USB port does. */
+void daran_sim_bus_send_to(daran_sim_bus_t *bus, uint32_t index, const char *bytes, size_t len);
+
 /* Hand every drive's pending replies to @p sink, drives in id order (ties in
  * index order), and clear them. Returns how many drives had replies. */
 uint32_t daran_sim_bus_collect(daran_sim_bus_t *bus, daran_sim_sink_fn sink, void *ctx);

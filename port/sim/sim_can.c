@@ -43,6 +43,19 @@ static void on_new_instance(void *ctx, uint32_t index, daran_drive_t *proto)
         can->chained_setup(can->chained_ctx, index, proto);
     }
     (void)start_front_end(can, index); /* cannot fail: it succeeded at attach */
+    if (can->front_end_started != NULL) {
+        can->front_end_started(can->front_end_ctx, index, &can->front[index]);
+    }
+}
+
+void daran_sim_can_on_front_end(daran_sim_can_t *can, daran_sim_front_end_fn fn, void *ctx)
+{
+    uint32_t i;
+    can->front_end_started = fn;
+    can->front_end_ctx = ctx;
+    for (i = 0; fn != NULL && i < can->line->count; i++) {
+        fn(ctx, i, &can->front[i]);
+    }
 }
 
 uint64_t daran_sim_can_tick_ns(const daran_sim_bus_t *line, uint64_t ticks)

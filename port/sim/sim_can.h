@@ -34,6 +34,11 @@ extern "C" {
 
 typedef struct daran_sim_can daran_sim_can_t;
 
+/* Told that drive @p index's front end @p front has just been initialised
+ * (daran_sim_can_on_front_end()), e.g. to make it a bridge with
+ * daran_can_bridge_init(): daran_can_init() forgets one. */
+typedef void (*daran_sim_front_end_fn)(void *ctx, uint32_t index, daran_can_t *front);
+
 /* The context of one drive's CAN port. */
 typedef struct daran_sim_can_port_ctx {
     daran_sim_can_t *owner;
@@ -47,6 +52,8 @@ struct daran_sim_can {
     daran_sim_can_port_ctx_t port_ctx[DARAN_SIM_MAX_DRIVES];
     daran_sim_setup_fn chained_setup; /* the line's setup function before attaching */
     void *chained_ctx;
+    daran_sim_front_end_fn front_end_started; /* NULL: none */
+    void *front_end_ctx;
 };
 
 /* The port every front end is given: send queues on the drive's node,
@@ -63,6 +70,10 @@ extern const daran_can_port_t daran_sim_can_port;
  * function afterwards. DARAN_ERR_BAD_ARGUMENT when a front end refuses its
  * port (a core without CAN cannot be attached). O(drives). */
 DARAN_NODISCARD daran_result_t daran_sim_can_attach(daran_sim_can_t *can, daran_sim_bus_t *line);
+
+/* Call @p fn (with @p ctx) on every drive's front end now, and on each
+ * one a power cycle initialises again; NULL stops that. */
+void daran_sim_can_on_front_end(daran_sim_can_t *can, daran_sim_front_end_fn fn, void *ctx);
 
 /* One control tick of the line with its CAN bus: daran_sim_bus_tick(), the
  * bus runs to the end of the tick, every front end polls. Call it instead

@@ -246,6 +246,44 @@ static void test_a_power_cycle_restarts_the_front_end_after_the_ports_setup(void
     TEST_ASSERT_EQUAL_HEX32(0x03Eu, heard[0].id);
 }
 
+static daran_can_t *started[4];
+static uint32_t started_count;
+
+static void note_front_end(void *ctx, uint32_t index, daran_can_t *front)
+{
+    (void)ctx;
+    if (started_count < 4u) {
+        started[started_count++] = front;
+    }
+    TEST_ASSERT_EQUAL_PTR(&can.front[index], front);
+}
+
+/* The hook a bridge needs: told of every front end now, and of a front end
+ * started again by a power cycle (daran_can_init() forgets a bridge). */
+static void test_the_front_end_hook_hears_of_every_front_end_and_each_restart(void)
+{
+    started_count = 0u;
+    daran_sim_can_on_front_end(&can, note_front_end, NULL);
+    TEST_ASSERT_EQUAL_UINT32(2u, started_count);
+    daran_sim_bus_power_cycle(&line, 1u);
+    TEST_ASSERT_EQUAL_UINT32(3u, started_count);
+    TEST_ASSERT_EQUAL_PTR(&can.front[1], started[2]);
+    daran_sim_can_on_front_end(&can, NULL, NULL);
+    daran_sim_bus_power_cycle(&line, 0u);
+    TEST_ASSERT_EQUAL_UINT32(3u, started_count);
+}
+
+/* A link to one drive (a gateway's USB port): the other drive hears
+ * nothing of it. */
+static void test_a_line_sent_to_one_drive_reaches_it_alone(void)
+{
+    static const char line_text[] = "w axis0.config.extra_setting.enable_reply_state 1\n";
+    daran_sim_bus_send_to(&line, 0u, line_text, sizeof line_text - 1u);
+    daran_sim_bus_send_to(&line, 5u, line_text, sizeof line_text - 1u); /* no such drive */
+    TEST_ASSERT_EQUAL_UINT32(1u, line.node[0].sim.model.cfg[DARAN_PROP_ENABLE_REPLY_STATE].u32);
+    TEST_ASSERT_EQUAL_UINT32(0u, line.node[1].sim.model.cfg[DARAN_PROP_ENABLE_REPLY_STATE].u32);
+}
+
 /* At 100 Hz a tick lasts 10 ms: 20 frames for drive 1 arrive before its
  * front end polls, and its ring of DARAN_CAN_RX_FRAMES drops the rest. */
 static void test_a_slow_control_loop_overflows_the_receive_ring(void)
@@ -284,6 +322,8 @@ int main(void)
     RUN_TEST(test_a_bus_off_drive_counts_its_frames_as_unsent);
     RUN_TEST(test_a_lost_reply_leaves_the_host_without_an_answer);
     RUN_TEST(test_a_power_cycle_restarts_the_front_end_after_the_ports_setup);
+    RUN_TEST(test_the_front_end_hook_hears_of_every_front_end_and_each_restart);
+    RUN_TEST(test_a_line_sent_to_one_drive_reaches_it_alone);
     RUN_TEST(test_a_slow_control_loop_overflows_the_receive_ring);
     RUN_TEST(test_the_bus_clock_is_the_lines_simulated_time);
     return UNITY_END();
