@@ -18,17 +18,36 @@
 
 int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
 {
-    float scaled = value * 100.0f;
-    scaled += scaled < 0.0f ? -0.5f : 0.5f;
-    int32_t raw = -32768; /* and NaN */
-    int fits = 0;
-    if (scaled >= 32768.0f) {
-        raw = 32767;
-    } else if (scaled > -32769.0f) {
-        raw = (int32_t)scaled;
-        fits = 1;
+    /* Exactly: value * 100.0f + 0.5f rounds twice, and a value within an ulp
+     * of a half count went up. |value| = m * 2^-shift with m < 2^24, so
+     * m * 100 < 2^31 is exact and one shift rounds it, half away from zero. */
+    uint32_t bits;
+    memcpy(&bits, &value, sizeof bits);
+    uint32_t negative = bits >> 31;
+    uint32_t biased = bits >> 23 & 0xFFu;
+    uint32_t significand = bits & 0x7FFFFFu;
+    if (biased != 0u) {
+        significand |= 0x800000u;
+    } else {
+        biased = 1u; /* a subnormal: the same scale as the least normal */
     }
-    daran_can_put_u16(bytes, (uint32_t)raw);
+    int shift = 150 - (int)biased;
+    uint64_t product = (uint64_t)significand * 100u;
+    uint64_t magnitude;
+    if (shift <= 0) {
+        magnitude = shift < -20 ? UINT64_MAX : product << -shift; /* inf and NaN: beyond */
+    } else if (shift > 40) {
+        magnitude = 0;
+    } else {
+        magnitude = (product + ((uint64_t)1 << (shift - 1))) >> shift;
+    }
+    uint32_t limit = negative != 0u ? 32768u : 32767u;
+    int fits = magnitude <= limit;
+    if (!fits) {
+        magnitude = limit;
+    }
+    uint32_t raw = (uint32_t)magnitude;
+    daran_can_put_u16(bytes, negative != 0u ? 0u - raw : raw);
     return saturate || fits;
 }
 

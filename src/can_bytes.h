@@ -53,7 +53,8 @@ static inline void daran_can_put_f32(uint8_t *bytes, float value)
 
 /* value x 100 rounded to the nearest, ties away from zero (C3): false when
  * it leaves the s16 range, unless @p saturate, which clamps it (a status
- * frame's fields, 2.7; `t`'s ignored velocity, C3); NaN saturates low. One copy, in
+ * frame's fields, 2.7; `t`'s ignored velocity, C3); infinity and NaN
+ * saturate by their sign. One copy, in
  * can.c, for the front end and the bridge. */
 int daran_can_put_scaled(uint8_t *bytes, float value, int saturate);
 

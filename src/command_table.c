@@ -147,6 +147,7 @@ daran_result_t daran_help(daran_drive_t *drive, const daran_request_t *request, 
 #else
     (void)request;
 #endif
+    (void)bridged; /* a build without port commands lists the core's alone anyway */
     const char *arguments = help_text;
     for (size_t i = 0; i < COMMAND_COUNT; i++) {
         const daran_command_t *command = &commands[i];

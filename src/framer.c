@@ -184,6 +184,7 @@ out_of_bytes:;
                 fields->len[count] = (daran_line_offset_t)(at - start);
                 count++;
             }
+            start = at; /* no field goes on past the line end */
             if (*in++ != '\n') {
                 drive->line_flags |= DARAN_LINE_DAMAGED;
             }
