@@ -16,7 +16,8 @@
 /* One count of a CAN preset's duration field, in seconds (s16 x 100). */
 #define CAN_DURATION_STEP 0.01f
 
-daran_result_t daran_parse_preset(const daran_request_t *request, float *values)
+DARAN_BRIDGE_SHARED daran_result_t daran_parse_preset(const daran_request_t *request,
+                                                      float *values)
 {
     for (uint8_t i = 0; i < DARAN_PRESET_VALUES; i++) {
         daran_field_t field = daran_field_at(request, 2u + i);
@@ -26,6 +27,14 @@ daran_result_t daran_parse_preset(const daran_request_t *request, float *values)
         }
     }
     return DARAN_OK;
+}
+
+DARAN_CAN_SHARED void daran_store_preset(daran_drive_t *drive, const float *values, uint8_t origin)
+{
+    for (uint8_t i = 0; i < DARAN_PRESET_VALUES; i++) {
+        drive->preset[i] = values[i];
+    }
+    drive->has_preset = origin;
 }
 
 daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request)
@@ -38,13 +47,6 @@ daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request
     return result;
 }
 
-void daran_store_preset(daran_drive_t *drive, const float *values, uint8_t origin)
-{
-    for (uint8_t i = 0; i < DARAN_PRESET_VALUES; i++) {
-        drive->preset[i] = values[i];
-    }
-    drive->has_preset = origin;
-}
 
 /* Cruise velocity that covers distance d (deg) in exactly t (s) at accel a
  * (deg/s^2), the move going to the HAL as an ordinary trapezoid in r/min and
@@ -67,12 +69,16 @@ static daran_result_t timed_move(float d, float t, float a, bool s_curve, float 
     float ramps = s_curve ? 8.0f : 4.0f;
     /* A duration short of the least one by less than @p slack seconds (a
      * CAN preset's, C13) runs in the least: the triangle at acceleration a. */
+#if DARAN_ENABLE_CAN
     if (slack > 0.0f) {
         float least = sqrtf(ramps * d / a);
         if (t < least && least - t < slack) {
             t = least;
         }
     }
+#else
+    (void)slack;
+#endif
     float at = a * t;
     float discriminant = at * at - ramps * a * d;
     float v;
@@ -173,7 +179,7 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, con
                       values[2] * DEG_PER_S_PER_RPM, s_curve, slack, move);
 }
 
-daran_result_t daran_parse_start(const daran_request_t *request, bool *rel)
+DARAN_BRIDGE_SHARED daran_result_t daran_parse_start(const daran_request_t *request, bool *rel)
 {
     uint32_t flag = 0;
     if (request->fields->count == 3u) { /* mt, mq, mp: 0 absolute, 1 relative */
@@ -187,16 +193,7 @@ daran_result_t daran_parse_start(const daran_request_t *request, bool *rel)
     return DARAN_OK;
 }
 
-daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *request)
-{
-    bool rel;
-    daran_result_t result = daran_parse_start(request, &rel);
-    return result != DARAN_OK ? result
-                              : daran_start_preset(drive, (daran_shape_t)request->command->arg,
-                                                   drive->preset, rel, request->motor == 0u);
-}
-
-daran_result_t daran_start_preset(daran_drive_t *drive, daran_shape_t shape, const float *values,
+DARAN_CAN_SHARED daran_result_t daran_start_preset(daran_drive_t *drive, daran_shape_t shape, const float *values,
                                   bool rel, bool broadcast)
 {
     /* A broadcast start is not for a drive that holds no preset (D18). */
@@ -221,6 +218,17 @@ daran_result_t daran_start_preset(daran_drive_t *drive, daran_shape_t shape, con
     return result;
 }
 
+daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *request)
+{
+    bool rel;
+    daran_result_t result = daran_parse_start(request, &rel);
+    return result != DARAN_OK ? result
+                              : daran_start_preset(drive, (daran_shape_t)request->command->arg,
+                                                   drive->preset, rel, request->motor == 0u);
+}
+
+
+#if DARAN_ENABLE_CAN
 daran_result_t daran_start_impedance(daran_drive_t *drive, float kp, float kd, bool broadcast)
 {
     if (drive->has_preset == DARAN_PRESET_NONE) {
@@ -237,5 +245,6 @@ daran_result_t daran_start_impedance(daran_drive_t *drive, float kp, float kd, b
     }
     return result;
 }
+#endif
 
 #endif /* DARAN_ENABLE_MULTI_MOTOR */

@@ -32,7 +32,7 @@ static daran_result_t parse_integer(daran_prop_type_t type, const daran_field_t 
     return daran_parse_u64(text, len, magnitude);
 }
 
-daran_result_t daran_check_property_value(daran_prop_t prop, daran_value_t value)
+DARAN_CAN_SHARED daran_result_t daran_check_property_value(daran_prop_t prop, daran_value_t value)
 {
     daran_property_t row = daran_property_row(prop);
     daran_range_t range = DARAN_PROPERTY_RANGE(row);
@@ -67,8 +67,9 @@ daran_result_t daran_check_property_value(daran_prop_t prop, daran_value_t value
 
 /* The written value's grammar, as the property's type says; its range is
  * daran_check_property_value()'s. */
-daran_result_t daran_parse_property_value(daran_prop_t prop, const daran_field_t *field,
-                                          daran_value_t *value)
+DARAN_BRIDGE_SHARED daran_result_t daran_parse_property_value(daran_prop_t prop,
+                                                              const daran_field_t *field,
+                                                              daran_value_t *value)
 {
     daran_prop_type_t type = DARAN_PROPERTY_TYPE(daran_property_row(prop));
     if (type == DARAN_TYPE_F32) {
@@ -97,7 +98,8 @@ daran_result_t daran_parse_property_value(daran_prop_t prop, const daran_field_t
     return daran_check_property_value(prop, *value);
 }
 
-daran_result_t daran_commit_property(daran_drive_t *drive, daran_prop_t prop, daran_value_t value)
+DARAN_CAN_SHARED daran_result_t daran_commit_property(daran_drive_t *drive, daran_prop_t prop,
+                                                      daran_value_t value)
 {
     if (prop == DARAN_PROP_REQUESTED_STATE && value.u32 == DARAN_STATE_CLOSED_LOOP) {
         /* Closing the loop is refused while a flag still holds the drive (D21). */

@@ -6,8 +6,8 @@
 #include "property.h"
 #include "reply.h"
 
-void daran_append_values(daran_drive_t *drive, const daran_value_t *values,
-                         const uint8_t *types, size_t count)
+DARAN_BRIDGE_SHARED void daran_append_values(daran_drive_t *drive, const daran_value_t *values,
+                                             const uint8_t *types, size_t count)
 {
     for (size_t i = 0; i < count; i++) {
         if (drive->reply_len > 0u) {
@@ -116,6 +116,18 @@ static const uint8_t register_name_len[] = {REGISTER_LINES(NAME_LEN)};
 #undef NAME_LEN
 DARAN_STATIC_ASSERT(sizeof register_name_len == ERROR_REGISTER_COUNT, a_name_for_each_register);
 
+DARAN_BRIDGE_SHARED void daran_reply_error_registers(daran_drive_t *drive, const uint32_t *values)
+{
+    const char *name = register_names;
+    for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
+        daran_reply_begin(drive);
+        daran_reply_text(drive, name, register_name_len[i]);
+        daran_reply_u64(drive, values[i]);
+        daran_reply_end(drive);
+        name += register_name_len[i] + 1u;
+    }
+}
+
 daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *request)
 {
     /* Every register is read before the first line goes out: a failing read
@@ -138,16 +150,4 @@ daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *req
     }
     daran_reply_error_registers(drive, values);
     return DARAN_OK;
-}
-
-void daran_reply_error_registers(daran_drive_t *drive, const uint32_t *values)
-{
-    const char *name = register_names;
-    for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
-        daran_reply_begin(drive);
-        daran_reply_text(drive, name, register_name_len[i]);
-        daran_reply_u64(drive, values[i]);
-        daran_reply_end(drive);
-        name += register_name_len[i] + 1u;
-    }
 }

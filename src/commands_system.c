@@ -3,7 +3,7 @@
 #include "handlers.h"
 #include "hal.h"
 
-daran_result_t daran_run_action(daran_drive_t *drive, daran_action_t action)
+DARAN_CAN_SHARED daran_result_t daran_run_action(daran_drive_t *drive, daran_action_t action)
 {
     daran_result_t result = daran_act(drive, action);
     if (result == DARAN_OK && action == DARAN_ACTION_REBOOT) {

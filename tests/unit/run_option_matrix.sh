@@ -46,7 +46,9 @@ if [ $# -eq 0 ]; then
          small-ring "-DDARAN_RX_RING_SIZE=16 -DDARAN_LINE_MAX=200" \
          big-ring "-DDARAN_RX_RING_SIZE=1024 -DDARAN_LINE_MAX=96" \
          no-help "-DDARAN_ENABLE_HELP=0" \
-         no-multi "-DDARAN_ENABLE_MULTI_MOTOR=0"
+         no-multi "-DDARAN_ENABLE_MULTI_MOTOR=0" \
+         no-can "-DDARAN_ENABLE_CAN=0" \
+         no-bridge "-DDARAN_ENABLE_CAN_BRIDGE=0"
 fi
 while [ $# -ge 2 ]; do
   run_one "$1" "$2" || failed=$((failed + 1))
