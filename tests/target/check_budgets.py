@@ -7,7 +7,7 @@ when the budget is exceeded.
                                   text + data of libdaran_ascii.a, or of the
                                   members whose name does not match / matches
                                   RE (the CAN front end has its own budget)
-  ram     OBJ NM LIMIT            sizeof(daran_drive_t), read from the size of
+  ram     OBJ NM LIMIT [can]      sizeof(daran_drive_t) (or daran_can_t), read from the size of
                                   a symbol declared as char[sizeof(daran_drive_t)]
   stack   OBJDIR LIB NM OBJDUMP LIMIT
                                   worst-case stack of every public function:
@@ -62,18 +62,21 @@ def check_flash(lib, size_tool, limit, members=None):
     return 0
 
 
-def check_ram(obj, nm, limit):
+def check_ram(obj, nm, limit, what="drive"):
     out = run([nm, "-S", obj])
     for line in out.splitlines():
         parts = line.split()
-        if len(parts) == 4 and parts[3] == "daran_target_sizeof_drive":
+        if len(parts) == 4 and parts[3] == "daran_target_sizeof_" + what:
             size = int(parts[1], 16)
-            print(f"sizeof(daran_drive_t): {size} bytes, budget {limit}")
+            print(f"sizeof(daran_{what}_t): {size} bytes, budget {limit}")
             if size > limit:
                 print(f"OVER BUDGET by {size - limit} bytes")
                 return 1
             return 0
-    print("daran_target_sizeof_drive not found in", obj)
+    if what != "drive":
+        print(f"no daran_{what}_t in this build (compiled out): nothing to measure")
+        return 0
+    print("daran_target_sizeof_" + what, "not found in", obj)
     return 1
 
 
@@ -235,7 +238,7 @@ def main(argv):
             members = (args[3][2:], args[4])
         return check_flash(args[0], args[1], int(args[2]), members)
     if cmd == "ram":
-        return check_ram(args[0], args[1], int(args[2]))
+        return check_ram(args[0], args[1], int(args[2]), args[3] if len(args) > 3 else "drive")
     if cmd == "stack":
         return check_stack(args[0], args[1], args[2], args[3], int(args[4]))
     if cmd == "symbols":
