@@ -3,8 +3,8 @@
 # daran_ascii_add_sim() (cmake/DaranSim.cmake), in the source tree and from
 # <prefix>/share/daran_ascii/port/sim where the package installs this folder.
 # daran-sim's own files (sim_main.c, sim_file_storage.*, sim_pty.*, the CAN
-# adapters sim_can_pty.*, sim_slcan.*, sim_usbcan.*, sim_can_text.*) are not
-# part of it.
+# adapters sim_can_pty.*, sim_slcan.*, sim_usbcan.*, sim_can_text.*, the
+# --bridge gateway sim_gateway.*) are not part of it.
 set(DARAN_SIM_LIBRARY_SOURCES
   sim_model.c
   sim_nvm.c

@@ -2,8 +2,10 @@
  * in lock-step (time moves only with `!advance`) or from a pseudo-terminal in
  * real time (--pty); with --can the drives also share a simulated CAN bus,
  * reached from stdin (`!can`) and from host adapters on pseudo-terminals
- * (--slcan, --usbcan). The interface is described in docs/simulator.md and
- * by --help; tests and users script it, so it changes only compatibly. */
+ * (--slcan, --usbcan); with --bridge the ASCII link reaches drive 1 alone,
+ * a gateway whose lines for other ids cross the CAN bus. The interface is
+ * described in docs/simulator.md and by --help; tests and users script it,
+ * so it changes only compatibly. */
 #define _XOPEN_SOURCE 700
 #define _DEFAULT_SOURCE
 #include <errno.h>
@@ -30,6 +32,7 @@
 #include "sim_can_pty.h"
 #include "sim_can_text.h"
 #include "sim_file_storage.h"
+#include "sim_gateway.h"
 #include "sim_pty.h"
 
 #define MAX_ADVANCE_S 86400.0
@@ -106,6 +109,12 @@ static const char usage_text[] =
     "  --usbcan           (implies --can) the same for the vendor USB-CAN adapter's\n"
     "                     16-byte packets (DrEmpower_can.py); its path is printed\n"
     "                     after --slcan's\n"
+    "  --bridge           (implies --can) the ASCII link (stdin or --pty) reaches\n"
+    "                     drive 1 alone; its lines for other ids cross the CAN\n"
+    "                     bus through drive 1's bridge. A query for another id\n"
+    "                     holds the link's next line until its answer (or\n"
+    "                     `error: no reply` after 10 ms a reply): in lock-step\n"
+    "                     simulated time runs meanwhile\n"
     "  --help             show this text and exit\n";
 
 /* (two strings: C99 compilers need take no longer literal than 4095 bytes) */
@@ -190,6 +199,10 @@ typedef struct sim_app {
     uint32_t can_unsent_told[DARAN_SIM_MAX_DRIVES];  /* daran_can_unsent() already told */
     unsigned long pty_dropped_told[CAN_PTYS];
     unsigned long pty_refused_told[CAN_PTYS];
+    /* --bridge: drive 1 a gateway, and where the answer to the query it
+     * waits for goes (the sink of the line that asked) */
+    sim_gateway_t gateway;
+    daran_sim_sink_fn asker;
 } sim_app_t;
 
 static sim_app_t app;
@@ -511,6 +524,7 @@ static void sink_stdout(void *ctx, uint32_t id, const char *bytes, size_t len)
 {
     (void)ctx;
     (void)id;
+    app.stdout_pending = true; /* a tick's output is flushed in real time */
     if (!app.echo) {
         fwrite(bytes, 1, len, stdout);
         return;
@@ -644,22 +658,43 @@ static void collect(daran_sim_sink_fn sink, const char *what, size_t what_len)
 
 /* Telemetry reports leave after the tick that made them, so they interleave
  * with replies in time order; they are no collision (protocol.md 11.2:
- * streaming is for point-to-point links). A signal stops the run between
+ * streaming is for point-to-point links). So does the gateway's answer to a
+ * bridged query, to the input that asked. A signal stops the run between
  * two ticks. */
 static void run_ticks(uint64_t n)
 {
     uint64_t k;
     for (k = 0; k < n && stop_signal == 0; k++) {
+        bool answering = sim_gateway_busy(&app.gateway);
         if (app.can_on) {
             daran_sim_can_tick(&app.can); /* the bus, the front ends, then the line's tick */
+            sim_gateway_after_tick(&app.gateway, &app.bus);
             report_can();
         } else {
             daran_sim_bus_tick(&app.bus);
         }
         trace_row();
-        if (daran_sim_bus_collect(&app.bus, app.pty ? sink_pty : sink_stdout, NULL) > 0u) {
+        if (daran_sim_bus_collect(&app.bus, answering ? app.asker : app.pty ? sink_pty : sink_stdout,
+                                  NULL) > 0u) {
             report_lost();
         }
+    }
+}
+
+/* Lock-step --bridge: the line just sent left a query waiting; simulated
+ * time runs until its answer (or `error: no reply`) has come, so answers
+ * keep the order of the lines and the bus's time shows. */
+static void wait_for_gateway(void)
+{
+    uint64_t limit = sim_gateway_wait_limit(app.bus.tick_hz);
+    uint64_t ticks = 0u;
+    while (sim_gateway_busy(&app.gateway) && ticks < limit && stop_signal == 0) {
+        run_ticks(1u);
+        ticks++;
+    }
+    if (sim_gateway_busy(&app.gateway) && stop_signal == 0) {
+        complain("drive 1's bridge still waits after %" PRIu64 " ticks (more than its timeouts)",
+                 ticks);
     }
 }
 
@@ -672,8 +707,9 @@ static void record_header(void)
     fputs("# Protocol lines received by daran-sim (--record): seconds since start, a tab,\n"
           "# then the exact bytes of the line before its \\n. Directives are not recorded.\n",
           app.record);
-    fprintf(app.record, "# daran-sim --drives %u --tick-hz %u%s\n", app.bus.count,
-            app.bus.tick_hz, app.pty ? " --pty (real time)" : app.realtime ? " (real time)" : "");
+    fprintf(app.record, "# daran-sim --drives %u --tick-hz %u%s%s\n", app.bus.count,
+            app.bus.tick_hz, app.gateway.on ? " --bridge" : "",
+            app.pty ? " --pty (real time)" : app.realtime ? " (real time)" : "");
 }
 
 /* Simulated time in as many decimals as make it exact (4 at 1 kHz, 6 at
@@ -958,8 +994,18 @@ static void protocol_line(line_source_t *s)
     }
     record_line(s->line, s->kept, s->total);
     s->line[s->kept] = '\n';
-    daran_sim_bus_send(&app.bus, s->line, s->kept + 1u);
+    if (app.gateway.on) {
+        daran_sim_bus_send_to(&app.bus, SIM_GATEWAY_INDEX, s->line, s->kept + 1u);
+    } else {
+        daran_sim_bus_send(&app.bus, s->line, s->kept + 1u);
+    }
     collect(s->sink, s->line, s->kept);
+    if (sim_gateway_busy(&app.gateway)) {
+        app.asker = s->sink;
+        if (!app.realtime) {
+            wait_for_gateway();
+        }
+    }
 }
 
 static void directive_line(line_source_t *s)
@@ -1097,6 +1143,43 @@ static void flush_can_outputs(void)
     }
 }
 
+/* Bytes read from an input (the pty, stdin) wait here until their lines
+ * may run; the input is not read again before they all have. */
+typedef struct held_input {
+    char buf[4096];
+    size_t pos;
+    size_t len;
+} held_input_t;
+
+/* Whether the next line of @p s may run now: not while drive 1's bridge
+ * waits for an answer (--bridge: the line would wait in its ring), and for
+ * the pty not while its replies pile up (back-pressure). */
+static bool may_take_line(const line_source_t *s)
+{
+    return stop_signal == 0 && !sim_gateway_busy(&app.gateway) &&
+           (s->sink != sink_pty || outq.len < OUTQ_HIGH);
+}
+
+/* One line at a time, its replies queued behind the earlier ones, while
+ * lines may run. */
+static void take_held(line_source_t *s, held_input_t *in)
+{
+    while (in->pos < in->len && may_take_line(s)) {
+        bool ended;
+        in->pos += source_take(s, in->buf + in->pos, in->len - in->pos, &ended);
+        if (ended) {
+            source_end_line(s);
+        }
+    }
+}
+
+/* Whether to read more of @p s: when what it held has run and a line could
+ * run now. */
+static bool wants_input(const line_source_t *s, const held_input_t *in)
+{
+    return in->pos == in->len && may_take_line(s);
+}
+
 static int run_realtime(void)
 {
     /* the ASCII pty, stdin, then the CAN adapters */
@@ -1104,9 +1187,8 @@ static int run_realtime(void)
     int slave_keep = -1;
     double period = 1.0 / (double)app.bus.tick_hz;
     double next;
-    char pty_buf[4096];
-    size_t pty_pos = 0u;
-    size_t pty_len = 0u;
+    static held_input_t pty_in;
+    static held_input_t stdin_in;
     bool stdin_open = true;
     uint32_t k;
 
@@ -1120,12 +1202,11 @@ static int run_realtime(void)
     while (stop_signal == 0) {
         double wait = next - now_s();
         int timeout = wait <= 0.0 ? 0 : (int)ceil(wait * 1000.0);
-        /* read the pty only when its last chunk is done and the replies
-         * are not piling up (back-pressure) */
-        bool want_pty = pty_pos == pty_len && outq.len < OUTQ_HIGH;
+        bool want_pty = wants_input(&pty_source, &pty_in);
+        bool want_stdin = stdin_open && wants_input(&stdin_source, &stdin_in);
         pfd[0].fd = app.pty_fd; /* poll() skips a negative descriptor */
         pfd[0].events = (short)((want_pty ? POLLIN : 0) | (outq.len > 0u ? POLLOUT : 0));
-        pfd[1].fd = stdin_open ? STDIN_FILENO : -1;
+        pfd[1].fd = want_stdin ? STDIN_FILENO : -1;
         pfd[1].events = POLLIN;
         for (k = 0; k < app.can_ptys; k++) {
             pfd[2u + k].fd = app.can_pty[k].fd;
@@ -1146,34 +1227,27 @@ static int run_realtime(void)
             outq_flush();
         }
         if (want_pty && (pfd[0].revents & POLLIN) != 0) {
-            ssize_t n = read(app.pty_fd, pty_buf, sizeof pty_buf);
+            ssize_t n = read(app.pty_fd, pty_in.buf, sizeof pty_in.buf);
             if (n > 0) {
-                pty_pos = 0u;
-                pty_len = (size_t)n;
+                pty_in.pos = 0u;
+                pty_in.len = (size_t)n;
             }
         }
-        /* one line at a time, its replies queued behind the earlier ones;
-         * no further line while the queue is at its high-water mark */
-        while (pty_pos < pty_len && outq.len < OUTQ_HIGH && stop_signal == 0) {
-            bool ended;
-            pty_pos += source_take(&pty_source, pty_buf + pty_pos, pty_len - pty_pos, &ended);
-            if (ended) {
-                source_end_line(&pty_source);
-            }
-        }
+        take_held(&pty_source, &pty_in);
         if (outq.len > 0u) {
             outq_flush();
         }
-        if (stdin_open && (pfd[1].revents & (POLLIN | POLLHUP | POLLERR)) != 0) {
-            char buf[4096];
-            ssize_t n = read(STDIN_FILENO, buf, sizeof buf);
+        if (want_stdin && (pfd[1].revents & (POLLIN | POLLHUP | POLLERR)) != 0) {
+            ssize_t n = read(STDIN_FILENO, stdin_in.buf, sizeof stdin_in.buf);
             if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) {
-                source_eof(&stdin_source);
-                stdin_open = false; /* keep serving the ptys */
+                source_eof(&stdin_source); /* nothing held, no query waiting */
+                stdin_open = false;        /* keep serving the ptys */
             } else if (n > 0) {
-                source_feed(&stdin_source, buf, (size_t)n);
+                stdin_in.pos = 0u;
+                stdin_in.len = (size_t)n;
             }
         }
+        take_held(&stdin_source, &stdin_in);
         /* the adapters' frames join the bus at the current tick's time */
         for (k = 0; k < app.can_ptys; k++) {
             sim_can_pty_serve(&app.can_pty[k], pfd[2u + k].revents);
@@ -1323,9 +1397,9 @@ static void keep_std_fds(void)
     }
 }
 
-/* --can: the drives' front ends on the bus, the console's node, and the
- * adapters asked for (which imply --can). Exit status 2 when one cannot be
- * set up. */
+/* --can: the drives' front ends on the bus, the console's node, drive 1's
+ * bridge with --bridge, and the adapters asked for (which, as --bridge,
+ * imply --can). Exit status 2 when one cannot be set up. */
 static int start_can(bool slcan, bool usbcan)
 {
     static const sim_can_pty_kind_t kinds[CAN_PTYS] = {SIM_CAN_PTY_SLCAN, SIM_CAN_PTY_USBCAN};
@@ -1339,6 +1413,13 @@ static int start_can(bool slcan, bool usbcan)
         return 2;
     }
     app.console_node = daran_sim_can_bus_add_node(&app.can.wire, console_receive, NULL);
+    if (app.gateway.on) {
+        sim_gateway_start(&app.gateway, &app.can);
+        if (app.gateway.refused > 0u) {
+            fprintf(stderr, "daran-sim: --bridge: drive 1's bridge refused its front end\n");
+            return 2;
+        }
+    }
     for (k = 0; k < CAN_PTYS; k++) {
         sim_can_pty_t *p = &app.can_pty[app.can_ptys];
         if (!wanted[k]) {
@@ -1390,6 +1471,7 @@ int main(int argc, char **argv)
         {"can", no_argument, NULL, 'c'},
         {"slcan", no_argument, NULL, 's'},
         {"usbcan", no_argument, NULL, 'u'},
+        {"bridge", no_argument, NULL, 'b'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
     };
@@ -1451,6 +1533,9 @@ int main(int argc, char **argv)
         case 'u':
             usbcan = true;
             break;
+        case 'b':
+            app.gateway.on = true;
+            break;
         case 'h':
             fputs(usage_text, stdout);
             fputs(usage_more, stdout);
@@ -1497,7 +1582,7 @@ int main(int argc, char **argv)
         trace_header();
         trace_row();
     }
-    if (app.can_on || slcan || usbcan) {
+    if (app.can_on || slcan || usbcan || app.gateway.on) {
         if ((rc = start_can(slcan, usbcan)) != 0) {
             return rc;
         }
