@@ -279,7 +279,7 @@ static daran_result_t parse_line(daran_can_bridge_t *bridge, const daran_request
         if (command->word[1] == 's') {
             return daran_parse_preset(request, bridge->values);
         }
-        bool rel;
+        bool rel = false; /* parse_start sets it only for a good flag */
         result = daran_parse_start(request, &rel);
         bridge->given = rel ? 1u : 0u;
         return result;

@@ -10,7 +10,7 @@ set(_corpus ${PROJECT_SOURCE_DIR}/tests/corpus)
 include(${_fz}/port_core.cmake)
 daran_port_core(daran_ascii_port_replay)
 
-foreach(h stream line number sim telemetry port can)
+foreach(h stream line number sim telemetry port can bridge)
   if(h STREQUAL "sim" AND NOT TARGET daran_sim_model)
     continue()
   endif()
