@@ -9,10 +9,8 @@
 # usage: bridge_twins.sh DARAN_SIM
 set -uo pipefail
 sim=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
+# shellcheck source=sh_support.sh
+. "$(dirname "$0")/sh_support.sh"
 
 # drive 3 overheated (its error registers are not 0) and drive 2 moved, so
 # the values are not all zeros; then every query kind, for ids 2 and 3
@@ -63,5 +61,4 @@ got=$(grep -c '^can ' "$tmp/bridged")
 printf 'r axis0.config.can_node_id\n' | "$sim" --drives 3 --bridge > "$tmp/one" 2> /dev/null
 [ "$(cat "$tmp/one")" = "$(printf '1\r')" ] || fail "--bridge: a broadcast read answered: $(cat -A "$tmp/one")"
 
-[ "$fails" -eq 0 ] && echo "daran-sim --bridge: bridged answers are the remote's own; all checks passed"
-exit $((fails > 0))
+verdict "daran-sim --bridge: bridged answers are the remote's own"

@@ -7,10 +7,8 @@
 # usage: can_cli.sh DARAN_SIM
 set -uo pipefail
 sim=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
+# shellcheck source=sh_support.sh
+. "$(dirname "$0")/sh_support.sh"
 
 "$sim" --help > "$tmp/help" || fail "--help exit status"
 for word in --can --slcan --usbcan '!can' can-lose can-mute can-unplug can-bus-off can-recover; do
@@ -52,5 +50,4 @@ printf "$session" | "$sim" --drives 2 > "$tmp/plain" 2> /dev/null
 printf "$session" | "$sim" --drives 2 --can > "$tmp/can" 2> /dev/null
 cmp -s "$tmp/plain" "$tmp/can" || fail "--can changed the ASCII replies"
 
-[ "$fails" -eq 0 ] && echo "daran-sim CAN command line: all checks passed"
-exit $((fails > 0))
+verdict "daran-sim CAN command line"

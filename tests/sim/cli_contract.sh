@@ -5,10 +5,8 @@
 # usage: cli_contract.sh DARAN_SIM
 set -uo pipefail
 sim=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
+# shellcheck source=sh_support.sh
+. "$(dirname "$0")/sh_support.sh"
 
 "$sim" --help > "$tmp/help" || fail "--help exit status"
 for word in --drives --nvm --tick-hz --trace --pty --help '!advance' '!power-cycle' '!fault' \
@@ -55,5 +53,4 @@ printf '!advance 1\n' | "$sim" --drives 2 --trace "$tmp/t2.csv" --trace-every 10
 [ "$(wc -l < "$tmp/t2.csv")" -eq 12 ] || fail "trace-every 100: want header + 11 rows"
 [ "$(head -1 "$tmp/t2.csv" | tr ',' '\n' | wc -l)" -eq 9 ] || fail "trace: 2 drives want 9 columns"
 
-[ "$fails" -eq 0 ] && echo "daran-sim CLI contract: all checks passed"
-exit "$fails"
+verdict "daran-sim CLI contract"
