@@ -155,8 +155,12 @@ static daran_result_t answer(daran_can_bridge_t *bridge)
         uint8_t data[8];
         daran_can_put_f32(data, bridge->values[0]);
         float vel = bridge->given == 2u ? bridge->values[1] : values[0].f32;
-        (void)daran_can_put_scaled(data + 4, vel, 1);
-        (void)daran_can_put_scaled(data + 6, values[bridge->count - 1u].f32, 1);
+        /* a limit the frame cannot carry is refused like a value of the
+         * line's (C3), not sent as another setting */
+        if (!daran_can_put_scaled(data + 4, vel, 0) ||
+            !daran_can_put_scaled(data + 6, values[bridge->count - 1u].f32, 0)) {
+            return DARAN_ERR_OUT_OF_RANGE;
+        }
         return send_or_fail(bridge, bridge->node, DARAN_CAN_TRAPEZOID, data);
     }
     case ANSWER_SERIAL:

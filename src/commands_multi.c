@@ -99,6 +99,13 @@ static daran_result_t timed_move(float d, float t, float a, bool s_curve, float 
     }
     move->vel_rpm = v / DEG_PER_S_PER_RPM;
     move->rate = rate / DEG_PER_S_PER_RPM;
+    if (!(move->vel_rpm > 0.0f) || !(move->rate > 0.0f)) {
+        /* a distance so small the plan underflows (a subnormal target): the
+         * drive steps there, nothing given, as for no distance at all */
+        move->given = 0;
+        move->vel_rpm = 0.0f;
+        move->rate = 0.0f;
+    }
     return DARAN_OK;
 }
 

@@ -361,6 +361,22 @@ static void test_mq_absolute_uses_the_distance_from_the_setpoint(void)
     check_timed_move(m, mv, 40.0f, -60.0f, 2.5f, 10.0f, __LINE__);
 }
 
+/* A subnormal distance: the plan's cruise velocity and acceleration
+ * underflow to 0, and the move goes as a step with nothing given, never as
+ * a trapezoid with a cruise of 0 (found by fuzz_bridge). */
+static void test_mq_of_a_subnormal_distance_is_a_step_with_nothing_given(void)
+{
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
+    ASSERT_SILENT(m, "ms 1 1.5e-45 81.92 325.61"); /* the least subnormal */
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    TEST_ASSERT_EQUAL_INT(DARAN_MOVE_TRAPEZOID, mv->kind);
+    TEST_ASSERT_EQUAL_UINT8(0, mv->given);
+    TEST_ASSERT_TRUE(mv->pos_deg > 0.0f && mv->pos_deg < 1e-44f);
+    TEST_ASSERT_TRUE(mv->vel_rpm == 0.0f && mv->rate == 0.0f);
+}
+
 static void test_infeasible_mq_is_refused_with_no_motion(void)
 {
     SKIP_IF_NO_MULTI();
@@ -1065,6 +1081,7 @@ int main(void)
     ADD(test_c_ramp_0_is_accepted_with_rate_0_in_modes_6_and_2);
     ADD(test_spec_mq_example_moves_each_drive_to_arrive_together);
     ADD(test_mq_absolute_uses_the_distance_from_the_setpoint);
+    ADD(test_mq_of_a_subnormal_distance_is_a_step_with_nothing_given);
     ADD(test_infeasible_mq_is_refused_with_no_motion);
     ADD(test_mq_within_the_1e4_shortfall_runs_the_exact_triangle);
     ADD(test_mq_with_the_vendor_17_digit_minimum_duration_is_accepted);
