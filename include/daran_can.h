@@ -123,7 +123,7 @@ uint32_t daran_can_unsent(const daran_can_t *can);
 typedef struct daran_can_bridge_read {
     uint16_t address; /* asked for */
     uint8_t type;     /* the reply's type code */
-    uint8_t done;     /* the reply came */
+    uint8_t reserved;
     uint32_t bits;    /* the reply's value */
 } daran_can_bridge_read_t;
 /** @endcond */

@@ -88,7 +88,6 @@ static daran_result_t ask(daran_can_bridge_t *bridge, uint32_t node, enum answer
         }
         bridge->reads[i].address = address;
         bridge->reads[i].type = (uint8_t)daran_can_type_of(props[i]);
-        bridge->reads[i].done = 0;
     }
     bridge->node = (uint8_t)node;
     bridge->kind = (uint8_t)kind;
@@ -209,7 +208,6 @@ void daran_bridge_offer(daran_can_bridge_t *bridge, const daran_can_slot_t *fram
     }
     read->type = (uint8_t)type;
     read->bits = daran_can_get_u32(frame->data + 4);
-    read->done = 1;
     bridge->next++;
     if (bridge->next < bridge->count) {
         daran_result_t result = ask_next(bridge);
