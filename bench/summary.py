@@ -131,7 +131,7 @@ def main():
               "| rows over it: %d of %d | %s |" % (LOOKUP_BASE, LOOKUP_PER_BYTE, over, len(lookup_rows),
                                                "met" if over == 0 else "**missed**"))
 
-    m = re.search(r"core flash \(text \+ data\): (\d+) bytes, budget (\d+)", budgets)
+    m = re.search(r"core flash \(text \+ data\)[^:]*: (\d+) bytes, budget (\d+)", budgets)
     if m:
         flash, budget = int(m.group(1)), int(m.group(2))
         md.append("| Cortex-M4 core flash (`budget_core_flash`: text + data of "

@@ -42,7 +42,7 @@ def main():
                 qemu_time += float(time_match.group(1))
         elif name in ("core_flash", "budget_core_flash"):
             totals = re.search(r"^\s*(\d+)\s+(\d+)\s+\d+\s+\d+\s+[0-9a-f]+\s+\(TOTALS\)", block, flags=re.M)
-            budget = re.search(r"core flash \(text \+ data\): (\d+) bytes", block)
+            budget = re.search(r"core flash \(text \+ data\)[^:]*: (\d+) bytes", block)
             if totals:
                 flash = int(totals.group(1)) + int(totals.group(2))
             elif budget:

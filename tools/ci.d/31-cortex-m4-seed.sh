@@ -28,7 +28,7 @@ flash_status=0
 ctest --test-dir build/cortex-m4-seed -R '^budget_core_flash$' --output-on-failure \
     >"$flash_log" 2>&1 || flash_status=$?
 sed -n '/text.*data.*bss/,/core flash/p' "$flash_log" | sed 's/ (ex .*libdaran_ascii.a)//'
-figure=$(sed -n 's/.*core flash (text + data): \([0-9]*\) bytes, budget \([0-9]*\).*/\1 bytes against \2/p' "$flash_log")
+figure=$(sed -n 's/.*core flash (text + data)[^:]*: \([0-9]*\) bytes, budget \([0-9]*\).*/\1 bytes against \2/p' "$flash_log")
 if [ -z "$figure" ]; then
     cat "$flash_log"
     echo "31-cortex-m4-seed: FAIL: budget_core_flash printed no figure"
