@@ -46,7 +46,7 @@ uint16_t daran_can_address_of(daran_prop_t prop)
 #if DARAN_CAN_ROWS > 0
     for (unsigned run = 0; run < DARAN_CAN_RUNS; run++) {
         if ((unsigned)prop - can_run_first[run] < can_run_count[run]) {
-            return (uint16_t)(can_run_high[run] << 8 | can_low[prop]);
+            return (uint16_t)((unsigned)can_run_high[run] << 8 | can_low[prop]);
         }
     }
 #else
