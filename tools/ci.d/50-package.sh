@@ -176,10 +176,11 @@ step "config (b): DARAN_LINE_MAX=64, DARAN_REPLY_CRLF=0, DARAN_ENABLE_HELP=0, th
 step "config (c): user header: no multi-motor, 32-byte ring, 256-byte lines" \
   config_suite c -DDARAN_CONFIG_HEADER="$repo/tests/config/config_c.h" \
   "-DDARAN_TEST_EXPECT=line_max=256;ring=32;multi=0;help=1;crlf=1"
-# The largest values daran_config.h allows: 16-bit ring and line indices at their edge.
-step "config (d): upper limits: 1024-byte lines and replies, 32768-byte ring, ids to 255" \
+# The largest values daran_config.h allows: 16-bit ring and line indices at
+# their edge (ids past 63 leave no room for CAN's 6-bit node ids: no CAN).
+step "config (d): upper limits: 1024-byte lines and replies, 32768-byte ring, ids to 255, no CAN" \
   config_suite d \
-  "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=1024;DARAN_RX_RING_SIZE=32768;DARAN_REPLY_MAX=1024;DARAN_MOTOR_ID_MAX=255" \
+  "-DDARAN_TEST_DEFINES=DARAN_LINE_MAX=1024;DARAN_RX_RING_SIZE=32768;DARAN_REPLY_MAX=1024;DARAN_MOTOR_ID_MAX=255;DARAN_ENABLE_CAN=0" \
   "-DDARAN_TEST_EXPECT=line_max=1024;ring=32768;reply_max=1024;motor_id_max=255"
 # The smallest values daran_config.h allows, with both features off: a ring
 # smaller than a line, and ids only up to 1 (the one-digit fast path).
