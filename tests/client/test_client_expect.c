@@ -1,0 +1,94 @@
+/* daran_client's reply shapes and retry rule: what each command is answered
+ * with when it succeeds, and that only queries are ever sent twice. */
+#include "daran_client.h"
+#include "unity.h"
+
+void setUp(void)
+{
+}
+
+void tearDown(void)
+{
+}
+
+typedef struct expectation {
+    daran_client_command_t command;
+    const char *word;
+    daran_client_reply_shape_t shape;
+    daran_client_class_t cls;
+} expectation_t;
+
+/* protocol.md section 4, 10.4 and 11.1, written out once more by hand so
+ * the table in daran_client.h is checked against an independent reading */
+static const expectation_t expected[] = {
+    {DARAN_CLIENT_CMD_T, "t", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_Q, "q", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_P, "p", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_V, "v", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_C, "c", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_D, "d", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_MS, "ms", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_PRESET},
+    {DARAN_CLIENT_CMD_MT, "mt", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_MQ, "mq", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_MP, "mp", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_MV, "mv", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_MC, "mc", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_MOTION},
+    {DARAN_CLIENT_CMD_R, "r", DARAN_CLIENT_REPLY_ONE_LINE, DARAN_CLIENT_CLASS_QUERY},
+    {DARAN_CLIENT_CMD_W, "w", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_WRITE},
+    {DARAN_CLIENT_CMD_SS, "ss", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_SYSTEM},
+    {DARAN_CLIENT_CMD_SE, "se", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_SYSTEM},
+    {DARAN_CLIENT_CMD_SR, "sr", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_SYSTEM},
+    {DARAN_CLIENT_CMD_SC, "sc", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_SYSTEM},
+    {DARAN_CLIENT_CMD_SZ, "sz", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_SYSTEM},
+    {DARAN_CLIENT_CMD_ST, "st", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_SYSTEM},
+    {DARAN_CLIENT_CMD_U, "u", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_SYSTEM},
+    {DARAN_CLIENT_CMD_F, "f", DARAN_CLIENT_REPLY_ONE_LINE, DARAN_CLIENT_CLASS_QUERY},
+    {DARAN_CLIENT_CMD_G, "g", DARAN_CLIENT_REPLY_ONE_LINE, DARAN_CLIENT_CLASS_QUERY},
+    {DARAN_CLIENT_CMD_I, "i", DARAN_CLIENT_REPLY_ONE_LINE, DARAN_CLIENT_CLASS_QUERY},
+    {DARAN_CLIENT_CMD_E, "e", DARAN_CLIENT_REPLY_ERROR_LINES, DARAN_CLIENT_CLASS_QUERY},
+    {DARAN_CLIENT_CMD_H, "h", DARAN_CLIENT_REPLY_UNTIL_QUIET, DARAN_CLIENT_CLASS_QUERY},
+    {DARAN_CLIENT_CMD_H_PROPERTIES, "h", DARAN_CLIENT_REPLY_UNTIL_END, DARAN_CLIENT_CLASS_QUERY},
+};
+
+static void test_every_command_has_its_reply_shape_and_class(void)
+{
+    TEST_ASSERT_EQUAL_UINT64(DARAN_CLIENT_CMD_COUNT, sizeof expected / sizeof expected[0]);
+    for (size_t i = 0; i < sizeof expected / sizeof expected[0]; i++) {
+        const expectation_t *e = &expected[i];
+        TEST_ASSERT_EQUAL_STRING(e->word, daran_client_command_word(e->command));
+        TEST_ASSERT_EQUAL_INT_MESSAGE(e->shape, daran_client_reply_shape(e->command), e->word);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(e->cls, daran_client_command_class(e->command), e->word);
+    }
+}
+
+static void test_only_queries_may_be_retried(void)
+{
+    size_t retried = 0;
+    for (size_t i = 0; i < sizeof expected / sizeof expected[0]; i++) {
+        bool query = expected[i].cls == DARAN_CLIENT_CLASS_QUERY;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(query, daran_client_may_retry(expected[i].command),
+                                      expected[i].word);
+        retried += query ? 1u : 0u;
+    }
+    TEST_ASSERT_EQUAL_UINT64(7, retried); /* r f g i e h, h properties */
+    TEST_ASSERT_FALSE(daran_client_may_retry(DARAN_CLIENT_CMD_MQ));
+    TEST_ASSERT_FALSE(daran_client_may_retry(DARAN_CLIENT_CMD_SZ));
+}
+
+static void test_a_value_outside_the_enum_gets_the_safe_answers(void)
+{
+    daran_client_command_t bogus = DARAN_CLIENT_CMD_COUNT;
+    TEST_ASSERT_NULL(daran_client_command_word(bogus));
+    TEST_ASSERT_EQUAL_INT(DARAN_CLIENT_REPLY_SILENT, daran_client_reply_shape(bogus));
+    TEST_ASSERT_EQUAL_INT(DARAN_CLIENT_CLASS_MOTION, daran_client_command_class(bogus));
+    TEST_ASSERT_FALSE(daran_client_may_retry(bogus));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_every_command_has_its_reply_shape_and_class);
+    RUN_TEST(test_only_queries_may_be_retried);
+    RUN_TEST(test_a_value_outside_the_enum_gets_the_safe_answers);
+    return UNITY_END();
+}
