@@ -131,7 +131,7 @@ bool daran_client_may_retry(daran_client_command_t command);
 /** Where the id of an `r`/`w` goes (protocol.md section 3). */
 typedef enum daran_client_scope {
     DARAN_CLIENT_SCOPE_AUTO,   /**< the core's property list decides; a path it lacks is AXIS */
-    DARAN_CLIENT_SCOPE_AXIS,   /**< `axisN.path` */
+    DARAN_CLIENT_SCOPE_AXIS,   /**< axisN.path */
     DARAN_CLIENT_SCOPE_SYSTEM  /**< `path … N` (the id last) */
 } daran_client_scope_t;
 
@@ -142,25 +142,26 @@ typedef enum daran_client_value_kind {
     DARAN_CLIENT_VALUE_INT   /**< s32 */
 } daran_client_value_kind_t;
 
+/** A `w` value: the member its kind names is the one sent. */
 typedef struct daran_client_value {
-    daran_client_value_kind_t kind;
-    float f32;
-    uint64_t uint;
-    int64_t sint;
+    daran_client_value_kind_t kind; /**< which member holds the value */
+    float f32;                      /**< DARAN_CLIENT_VALUE_F32 */
+    uint64_t uint;                  /**< DARAN_CLIENT_VALUE_UINT */
+    int64_t sint;                   /**< DARAN_CLIENT_VALUE_INT */
 } daran_client_value_t;
 
 /** One request. `values[0..value_count)` follow the id in order (optional
  * ones are left off by a smaller value_count). `path`: the property of
- * `r`/`w` (written with or without `axisN.`: an `axisN.` prefix is replaced
+ * `r`/`w` (written with or without an axisN. prefix, which is replaced
  * by the request's id), the prefix of `h id properties` (NULL: none). */
 typedef struct daran_client_request {
-    daran_client_command_t command;
-    uint8_t id;
-    uint8_t value_count;
-    float values[DARAN_CLIENT_VALUES_MAX];
-    const char *path;
-    daran_client_scope_t scope;
-    daran_client_value_t value;
+    daran_client_command_t command; /**< what to send */
+    uint8_t id;                     /**< the motor id, 0..63 (0: every drive) */
+    uint8_t value_count;            /**< how many of values[] go out */
+    float values[DARAN_CLIENT_VALUES_MAX]; /**< the fields after the id */
+    const char *path;               /**< `r`/`w` path, discovery prefix (NUL-terminated) */
+    daran_client_scope_t scope;     /**< where `r`/`w` put the id */
+    daran_client_value_t value;     /**< the value of a `w` */
 } daran_client_request_t;
 
 /** Build `request` into buf[0..size) as one line ending in `\n`, with the
@@ -181,26 +182,27 @@ DARAN_NODISCARD daran_result_t daran_client_build(const daran_client_request_t *
 DARAN_NODISCARD daran_result_t daran_client_seal(char *buf, size_t size, size_t payload_len,
                                                  bool with_checksum, size_t *len);
 
-/** The scope of a property path written without `axisN.`, from the core's
+/** The scope of a property path written without an axisN. prefix, from the core's
  * property list (daran_properties.h): SYSTEM for the system rows, AXIS for
  * every other path (a port's own axis rows included). O(rows). */
 daran_client_scope_t daran_client_path_scope(const char *path, size_t len);
 
 /* ---------------------------------------------------------------- replies */
 
+/** What a received line is. */
 typedef enum daran_client_line_kind {
     DARAN_CLIENT_LINE_TEXT,      /**< values, an `e` register, discovery, help */
     DARAN_CLIENT_LINE_ERROR,     /**< `error: <phrase>`: .error holds the result */
     DARAN_CLIENT_LINE_END,       /**< `end`, the last line of discovery */
-    DARAN_CLIENT_LINE_TELEMETRY  /**< `@<id> <t> …` */
+    DARAN_CLIENT_LINE_TELEMETRY  /**< a telemetry report: the line starts with `@` */
 } daran_client_line_kind_t;
 
 /** A received line: a view of its payload (line end and checksum field cut off). */
 typedef struct daran_client_line {
-    daran_client_line_kind_t kind;
-    const char *payload;
-    size_t len;
-    bool had_checksum;
+    daran_client_line_kind_t kind; /**< what the line is */
+    const char *payload;           /**< its text (not NUL-terminated) */
+    size_t len;                    /**< the payload's length */
+    bool had_checksum;             /**< it carried a valid `*N` */
     daran_result_t error; /**< LINE_ERROR: the drive's result; DARAN_OK otherwise */
 } daran_client_line_t;
 
@@ -229,10 +231,12 @@ typedef struct daran_client_number {
 DARAN_NODISCARD daran_result_t daran_client_parse_number(const char *text, size_t len,
                                                          daran_client_number_t *out);
 
-/** The number as a u32 / s32 / u64: DARAN_ERR_INVALID_VALUE when it is not
- * an integer, DARAN_ERR_OUT_OF_RANGE when it does not fit. O(1). */
+/** The number as a u32: DARAN_ERR_INVALID_VALUE when it is not an integer,
+ * DARAN_ERR_OUT_OF_RANGE when it does not fit (-0 is 0). O(1). */
 DARAN_NODISCARD daran_result_t daran_client_number_u32(const daran_client_number_t *n, uint32_t *out);
+/** The number as an s32, as daran_client_number_u32(). O(1). */
 DARAN_NODISCARD daran_result_t daran_client_number_s32(const daran_client_number_t *n, int32_t *out);
+/** The number as a u64 (a serial number), as daran_client_number_u32(). O(1). */
 DARAN_NODISCARD daran_result_t daran_client_number_u64(const daran_client_number_t *n, uint64_t *out);
 
 /** Split a values line (`r f g i`) into numbers. Exactly `expected` fields
@@ -245,7 +249,7 @@ DARAN_NODISCARD daran_result_t daran_client_parse_values(const daran_client_line
 /** `e`'s registers, in the drive's order: axis, motor, encoder, controller,
  * fet_thermistor, motor_thermistor, can. */
 typedef struct daran_client_errors {
-    uint32_t reg[DARAN_CLIENT_ERROR_REGISTERS];
+    uint32_t reg[DARAN_CLIENT_ERROR_REGISTERS]; /**< each register's value */
 } daran_client_errors_t;
 
 /** The name of `e`'s register `index` ("axis" …); NULL past the last. O(1). */
@@ -258,13 +262,13 @@ DARAN_NODISCARD daran_result_t daran_client_parse_error_line(const daran_client_
                                                              size_t index,
                                                              daran_client_errors_t *errors);
 
-/** A telemetry report `@<id> <t> <value>…` (protocol.md 11.2): the values in
- * the order of the bits of `axis0.telemetry.fields`. */
+/** A telemetry report (protocol.md 11.2): `@`, the drive's id, its time,
+ * then the values in the order of the bits of `axis0.telemetry.fields`. */
 typedef struct daran_client_report {
-    uint8_t id;
-    float time_s;
-    size_t count;
-    daran_client_number_t values[DARAN_CLIENT_REPORT_MAX];
+    uint8_t id;        /**< the reporting drive */
+    float time_s;      /**< the drive's time since boot, in seconds */
+    size_t count;      /**< how many values[] hold */
+    daran_client_number_t values[DARAN_CLIENT_REPORT_MAX]; /**< the fields, in bit order */
 } daran_client_report_t;
 
 /** Decode a TELEMETRY line (read by daran_client_read_line, which checked
@@ -272,25 +276,26 @@ typedef struct daran_client_report {
 DARAN_NODISCARD daran_result_t daran_client_parse_report(const daran_client_line_t *line,
                                                          daran_client_report_t *out);
 
+/** A property's value type, as discovery names it. */
 typedef enum daran_client_type {
-    DARAN_CLIENT_TYPE_F32,
-    DARAN_CLIENT_TYPE_U32,
-    DARAN_CLIENT_TYPE_S32,
-    DARAN_CLIENT_TYPE_U64,
-    DARAN_CLIENT_TYPE_BOOL
+    DARAN_CLIENT_TYPE_F32,  /**< `f32` */
+    DARAN_CLIENT_TYPE_U32,  /**< `u32` */
+    DARAN_CLIENT_TYPE_S32,  /**< `s32` */
+    DARAN_CLIENT_TYPE_U64,  /**< `u64` */
+    DARAN_CLIENT_TYPE_BOOL  /**< `bool` */
 } daran_client_type_t;
 
 /** A discovery line `<path> <type> <access> <unit> [<range>]`: views into
  * the line; unit_len 0 for `-`, range_len 0 when there is none. */
 typedef struct daran_client_property {
-    const char *path;
-    size_t path_len;
-    daran_client_type_t type;
-    bool writable;
-    const char *unit;
-    size_t unit_len;
-    const char *range;
-    size_t range_len;
+    const char *path;         /**< as the drive writes it (axis0. in front of axis rows) */
+    size_t path_len;          /**< its length */
+    daran_client_type_t type; /**< the value type */
+    bool writable;            /**< `rw` (else `ro`) */
+    const char *unit;         /**< the unit */
+    size_t unit_len;          /**< its length; 0 for `-` */
+    const char *range;        /**< what a write must satisfy */
+    size_t range_len;         /**< its length; 0 when any value goes */
 } daran_client_property_t;
 
 /** Decode one discovery line (not `end`). DARAN_ERR_INVALID_VALUE when it
@@ -300,10 +305,10 @@ DARAN_NODISCARD daran_result_t daran_client_parse_property(const daran_client_li
 
 /** A help line `<word> <arguments>`: the word and the rest (views). */
 typedef struct daran_client_help {
-    const char *word;
-    size_t word_len;
-    const char *arguments;
-    size_t arguments_len;
+    const char *word;     /**< the command word */
+    size_t word_len;      /**< its length */
+    const char *arguments; /**< the rest of the line */
+    size_t arguments_len; /**< its length */
 } daran_client_help_t;
 
 /** Decode one `h id` line. DARAN_ERR_INVALID_VALUE for a blank line. O(len). */
@@ -321,7 +326,7 @@ typedef struct daran_client_transport {
     size_t (*read)(void *ctx, char *buf, size_t size, uint32_t timeout_ms);
     /** A millisecond clock (wraps at 2^32). */
     uint32_t (*now_ms)(void *ctx);
-    void *ctx;
+    void *ctx; /**< passed to each function */
 } daran_client_transport_t;
 
 /** Called with each reply line of a request (never with the error line that
@@ -330,16 +335,17 @@ typedef void (*daran_client_line_fn)(void *ctx, const daran_client_line_t *line)
 /** Called with each telemetry report that arrives, whenever the link reads. */
 typedef void (*daran_client_report_fn)(void *ctx, const daran_client_report_t *report);
 
+/** How a link behaves; copied by daran_client_link_init(). */
 typedef struct daran_client_link_config {
     bool checksum;           /**< send every request with `*N` (and verify every reply's) */
     uint8_t retries;         /**< extra attempts of a query after a timeout or damaged reply */
     uint32_t quiet_ms;       /**< `h id`'s reply ends this long after its last line; also
                                   how long the link waits for the tail of a damaged reply */
-    daran_client_report_fn on_report;
-    void *report_ctx;
+    daran_client_report_fn on_report; /**< telemetry reports, may be NULL */
+    void *report_ctx;                 /**< passed to on_report */
     daran_client_line_fn on_stray; /**< lines that belong to no request (a late error of an
                                          unconfirmed silent command), may be NULL */
-    void *stray_ctx;
+    void *stray_ctx;                /**< passed to on_stray */
 } daran_client_link_config_t;
 
 /** What a request ended with, beside its result. */
@@ -351,16 +357,17 @@ typedef struct daran_client_outcome {
 
 /** The link's whole state: caller-owned, no heap. */
 typedef struct daran_client_link {
-    const daran_client_transport_t *transport;
-    daran_client_link_config_t config;
-    char tx[DARAN_CLIENT_LINE_MAX];
+    const daran_client_transport_t *transport; /**< the port's byte link */
+    daran_client_link_config_t config;         /**< as given to daran_client_link_init() */
+    char tx[DARAN_CLIENT_LINE_MAX];            /**< the request line being sent */
     char rx[DARAN_CLIENT_LINE_MAX]; /**< the line being received */
-    size_t rx_len;
+    size_t rx_len;                  /**< its length so far */
     bool rx_overflow;               /**< the line being received did not fit: dropped at its end */
     char in[64];                    /**< bytes read from the transport, not yet framed */
-    size_t in_pos, in_len;
+    size_t in_pos;                  /**< the next byte of in[] to frame */
+    size_t in_len;                  /**< how many bytes in[] holds */
     char last[DARAN_CLIENT_LINE_MAX]; /**< the last reply line's payload (for `r f g i`) */
-    size_t last_len;
+    size_t last_len;                /**< its length (0: none) */
     uint32_t bad_lines;             /**< received lines dropped: damaged, too long, unreadable */
 } daran_client_link_t;
 
