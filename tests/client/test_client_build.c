@@ -303,6 +303,7 @@ static void test_every_built_request_is_accepted_by_a_real_core(void)
         motion(DARAN_CLIENT_CMD_V, 1, 3, 15, 3, 2, 0, 0),
         motion(DARAN_CLIENT_CMD_C, 1, 3, 0.1f, 0.02f, 6, 0, 0),
         motion(DARAN_CLIENT_CMD_D, 1, 5, 10, 0, 0.5f, 0.1f, 0.01f),
+#if DARAN_ENABLE_MULTI_MOTOR
         motion(DARAN_CLIENT_CMD_MS, 1, 3, 120, 5, 10, 0, 0),
         motion(DARAN_CLIENT_CMD_MT, 1, 1, 0, 0, 0, 0, 0),
         motion(DARAN_CLIENT_CMD_MS, 1, 3, 10, 0, 0, 0, 0),
@@ -311,6 +312,7 @@ static void test_every_built_request_is_accepted_by_a_real_core(void)
         simple(DARAN_CLIENT_CMD_MV, 1),
         motion(DARAN_CLIENT_CMD_MS, 1, 3, 1, 0, 1, 0, 0),
         simple(DARAN_CLIENT_CMD_MC, 1),
+#endif
         write_of("output_shaft.input_pos", f32_value(1.5e-7f), 1),
         write_of("config.uart_baudrate", uint_value(9600), 1),
         write_of("config.extra_setting.stored_turns_counts", int_value(-7), 1),

@@ -170,6 +170,7 @@ static daran_client_line_t last_line(void)
     return line;
 }
 
+#if DARAN_ENABLE_TELEMETRY
 static void write_property(const char *path, daran_client_value_t value)
 {
     daran_client_request_t w = request_of(DARAN_CLIENT_CMD_W, 1);
@@ -177,6 +178,7 @@ static void write_property(const char *path, daran_client_value_t value)
     w.value = value;
     TEST_ASSERT_EQUAL_INT(DARAN_OK, send_request(&w, NULL));
 }
+#endif
 
 static void test_a_query_gets_its_values(void)
 {
@@ -245,6 +247,7 @@ static void test_e_answers_seven_registers(void)
     TEST_ASSERT_EQUAL_UINT64(0, wire_len);
 }
 
+#if DARAN_ENABLE_DISCOVERY
 static void test_discovery_is_collected_until_end(void)
 {
     daran_client_request_t discover = request_of(DARAN_CLIENT_CMD_H_PROPERTIES, 1);
@@ -266,7 +269,9 @@ static void test_discovery_is_collected_until_end(void)
                                                           NULL, &outcome));
     TEST_ASSERT_EQUAL_UINT64(DARAN_PROP_COUNT, outcome.lines);
 }
+#endif
 
+#if DARAN_ENABLE_HELP
 static void test_help_ends_when_the_link_falls_quiet(void)
 {
     /* what the drive answers `h 1` with, counted at the source */
@@ -290,6 +295,7 @@ static void test_help_ends_when_the_link_falls_quiet(void)
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_client_parse_help(&line, &help));
     TEST_ASSERT_EQUAL_STRING_LEN("t", help.word, help.word_len);
 }
+#endif
 
 static void test_a_drive_that_does_not_answer_times_out(void)
 {
@@ -347,6 +353,7 @@ static void test_a_motion_command_is_never_sent_twice(void)
     TEST_ASSERT_EQUAL_UINT8(1, outcome.attempts);
 }
 
+#if DARAN_ENABLE_TELEMETRY
 static void test_telemetry_reports_are_told_apart_from_replies(void)
 {
     write_property("telemetry.fields", (daran_client_value_t){DARAN_CLIENT_VALUE_UINT, 0, 0x181u,
@@ -374,6 +381,7 @@ static void test_telemetry_reports_are_told_apart_from_replies(void)
     daran_client_link_service(&link);
     TEST_ASSERT_EQUAL_UINT64(2, report_count);
 }
+#endif
 
 static void test_a_late_error_of_an_unwaited_command_is_a_stray(void)
 {
@@ -430,12 +438,18 @@ int main(void)
     RUN_TEST(test_a_query_gets_its_values);
     RUN_TEST(test_a_refused_command_answers_the_drives_error);
     RUN_TEST(test_e_answers_seven_registers);
+#if DARAN_ENABLE_DISCOVERY
     RUN_TEST(test_discovery_is_collected_until_end);
+#endif
+#if DARAN_ENABLE_HELP
     RUN_TEST(test_help_ends_when_the_link_falls_quiet);
+#endif
     RUN_TEST(test_a_drive_that_does_not_answer_times_out);
     RUN_TEST(test_a_damaged_query_reply_is_retried);
     RUN_TEST(test_a_motion_command_is_never_sent_twice);
+#if DARAN_ENABLE_TELEMETRY
     RUN_TEST(test_telemetry_reports_are_told_apart_from_replies);
+#endif
     RUN_TEST(test_a_late_error_of_an_unwaited_command_is_a_stray);
     RUN_TEST(test_a_port_that_cannot_write_is_a_bus_error);
     RUN_TEST(test_a_line_too_long_for_the_link_is_dropped);
