@@ -96,17 +96,29 @@ static daran_result_t take_line(daran_client_link_t *link, daran_client_line_t *
     return result;
 }
 
+/* The next whole line before deadline that is not a telemetry report
+ * (those go to their callback on the way); false when the deadline comes
+ * first. *result says whether the line could be read. */
+static bool next_line(daran_client_link_t *link, uint32_t deadline, daran_client_line_t *line,
+                      daran_result_t *result)
+{
+    while (frame_line(link, deadline)) {
+        bool is_report;
+        *result = take_line(link, line, &is_report);
+        if (!is_report) {
+            return true;
+        }
+    }
+    return false;
+}
+
 /* Hand every whole line that arrives before deadline to the report or stray
  * callback. */
 static void drain(daran_client_link_t *link, uint32_t deadline)
 {
-    while (frame_line(link, deadline)) {
-        daran_client_line_t line;
-        bool is_report;
-        daran_result_t result = take_line(link, &line, &is_report);
-        if (is_report) {
-            continue;
-        }
+    daran_client_line_t line;
+    daran_result_t result;
+    while (next_line(link, deadline, &line, &result)) {
         if (result != DARAN_OK) {
             link->bad_lines++;
         } else if (line.len > 0u && link->config.on_stray != NULL) {
@@ -138,18 +150,14 @@ static daran_result_t collect(daran_client_link_t *link, daran_client_reply_shap
     uint32_t deadline = now_ms(link) + timeout_ms;
     size_t lines = 0;
     for (;;) {
-        if (!frame_line(link, deadline)) {
+        daran_client_line_t line;
+        daran_result_t result;
+        if (!next_line(link, deadline, &line, &result)) {
             if (shape == DARAN_CLIENT_REPLY_SILENT ||
                 (shape == DARAN_CLIENT_REPLY_UNTIL_QUIET && lines > 0u)) {
                 return DARAN_OK;
             }
             return DARAN_ERR_NO_REPLY;
-        }
-        daran_client_line_t line;
-        bool is_report;
-        daran_result_t result = take_line(link, &line, &is_report);
-        if (is_report) {
-            continue;
         }
         if (result != DARAN_OK) {
             return result;

@@ -100,22 +100,26 @@ static void on_report(void *ctx, const daran_client_report_t *report)
     report_count++;
 }
 
+/* Keep a line's payload as a C string in the next of `room` slots. */
+static void keep_line(char (*slots)[DARAN_CLIENT_LINE_MAX], size_t room, size_t *count,
+                      const daran_client_line_t *line)
+{
+    TEST_ASSERT_TRUE(*count < room && line->len < DARAN_CLIENT_LINE_MAX);
+    memcpy(slots[*count], line->payload, line->len);
+    slots[*count][line->len] = '\0';
+    (*count)++;
+}
+
 static void on_stray(void *ctx, const daran_client_line_t *line)
 {
     (void)ctx;
-    TEST_ASSERT_TRUE(stray_count < 4u && line->len < DARAN_CLIENT_LINE_MAX);
-    memcpy(strays[stray_count], line->payload, line->len);
-    strays[stray_count][line->len] = '\0';
-    stray_count++;
+    keep_line(strays, 4u, &stray_count, line);
 }
 
 static void on_line(void *ctx, const daran_client_line_t *line)
 {
     (void)ctx;
-    TEST_ASSERT_TRUE(got_count < 64u && line->len < DARAN_CLIENT_LINE_MAX);
-    memcpy(got[got_count], line->payload, line->len);
-    got[got_count][line->len] = '\0';
-    got_count++;
+    keep_line(got, 64u, &got_count, line);
 }
 
 static void open_link(bool checksum, uint8_t retries)
