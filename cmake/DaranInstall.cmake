@@ -13,7 +13,7 @@ endif()
 
 
 set(_daran_public_headers)
-foreach(_h IN ITEMS daran_ascii.h daran_build.h daran_can.h daran_config.h daran_drive.h daran_hal.h daran_port.h
+foreach(_h IN ITEMS daran_ascii.h daran_build.h daran_can.h daran_client.h daran_config.h daran_drive.h daran_hal.h daran_port.h
                     daran_properties.h daran_result.h daran_version.h)
   list(APPEND _daran_public_headers "${PROJECT_SOURCE_DIR}/include/${_h}")
 endforeach()
@@ -59,6 +59,9 @@ foreach(_flags IN ITEMS CMAKE_C_FLAGS CMAKE_C_FLAGS_${CMAKE_BUILD_TYPE})
 endforeach()
 
 install(TARGETS daran_ascii EXPORT daran_asciiTargets
+  ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+# The master side (client/, docs/client.md): daran_ascii::daran_client.
+install(TARGETS daran_client EXPORT daran_asciiTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(FILES ${_daran_public_headers} DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 install(EXPORT daran_asciiTargets
