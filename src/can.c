@@ -11,6 +11,7 @@
 #include "can.h"
 #include "can_bytes.h"
 #include "can_ring.h"
+#include "compiler.h"
 #include "hal.h"
 #include "handlers.h"
 
@@ -53,14 +54,25 @@ int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
 
 /* ---- what the drive sends ---- */
 
-static void send(daran_can_t *can, uint32_t id, const uint8_t *data)
+DARAN_STATIC_ASSERT(DARAN_SHAPE_FILTERED == 0 && DARAN_SHAPE_TRAPEZOID == 1 &&
+                        DARAN_SHAPE_PASSTHROUGH == 2 && DARAN_SHAPE_VELOCITY == 3 &&
+                        DARAN_SHAPE_TORQUE == 4,
+                    can_codes_follow_the_shape_order);
+
+bool daran_can_transmit(daran_can_t *can, uint32_t id, const uint8_t *data)
 {
     daran_can_frame_t frame;
     frame.id = id;
     frame.dlc = 8;
     frame.flags = 0;
     memcpy(frame.data, data, sizeof frame.data);
-    if (!can->port->send(can->port_ctx, &frame)) {
+    return can->port->send(can->port_ctx, &frame);
+}
+
+/* The drive's own frames: one the port refuses is counted, not retried. */
+static void send(daran_can_t *can, uint32_t id, const uint8_t *data)
+{
+    if (!daran_can_transmit(can, id, data)) {
         can->unsent++;
     }
 }
@@ -132,10 +144,7 @@ static bool value_refused(daran_result_t result)
 /* 0x019..0x01D: t q p v c with every value given (2.1). */
 static void direct_motion(daran_can_t *can, uint32_t node, uint32_t code, const uint8_t *data)
 {
-    static const uint8_t shape_of[] = {DARAN_SHAPE_FILTERED, DARAN_SHAPE_TRAPEZOID,
-                                       DARAN_SHAPE_PASSTHROUGH, DARAN_SHAPE_VELOCITY,
-                                       DARAN_SHAPE_TORQUE};
-    daran_shape_t shape = (daran_shape_t)shape_of[code - DARAN_CAN_TRACK];
+    daran_shape_t shape = (daran_shape_t)(code - DARAN_CAN_TRACK);
     float values[3] = {daran_can_get_f32(data), daran_can_get_scaled(data + 4), daran_can_get_scaled(data + 6)};
     if (shape >= DARAN_SHAPE_VELOCITY) {
         values[2] = mode_of(daran_can_get_u16(data + 6), shape == DARAN_SHAPE_TORQUE);
@@ -180,10 +189,7 @@ static void start(daran_can_t *can, uint32_t subcode, const uint8_t *data, bool 
         (void)daran_start_impedance(drive, daran_can_get_scaled(data + 4), daran_can_get_scaled(data + 6), broadcast);
         return;
     }
-    static const uint8_t shape_of[] = {DARAN_SHAPE_FILTERED, DARAN_SHAPE_TRAPEZOID,
-                                       DARAN_SHAPE_PASSTHROUGH, DARAN_SHAPE_VELOCITY,
-                                       DARAN_SHAPE_TORQUE};
-    daran_shape_t shape = (daran_shape_t)shape_of[subcode - DARAN_CAN_SUB_START_TRACK];
+    daran_shape_t shape = (daran_shape_t)(subcode - DARAN_CAN_SUB_START_TRACK);
     float values[DARAN_PRESET_VALUES];
     memcpy(values, drive->preset, sizeof values);
     bool rel = false;

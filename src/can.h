@@ -36,6 +36,14 @@
 #define DARAN_CAN_TYPE_U32 3u
 #define DARAN_CAN_TYPE_S32 4u
 
+/* The codes 0x019..0x01D and the start sub-codes 0x10..0x14 run the motion
+ * shapes in their enum order (handlers.h): shape = code - DARAN_CAN_TRACK =
+ * sub-code - DARAN_CAN_SUB_START_TRACK. can.c checks the order. */
+
+/* One 8-byte standard frame to the port: true when it took it (can.c, for
+ * the front end's own frames and the bridge's). */
+bool daran_can_transmit(daran_can_t *can, uint32_t id, const uint8_t *data);
+
 /* The property at a CAN address in this build: false when none is. */
 bool daran_can_property_at(uint16_t address, daran_prop_t *prop);
 #if DARAN_ENABLE_CAN_BRIDGE

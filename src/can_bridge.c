@@ -47,22 +47,12 @@ bool daran_bridge_active(const daran_drive_t *drive)
     return drive->bridge != NULL && drive->bridge->can->enabled;
 }
 
-static bool send_frame(daran_can_bridge_t *bridge, uint32_t node, uint32_t code,
-                       const uint8_t *data)
-{
-    daran_can_t *can = bridge->can;
-    daran_can_frame_t frame;
-    frame.id = node << 5 | code;
-    frame.dlc = 8;
-    frame.flags = 0;
-    memcpy(frame.data, data, sizeof frame.data);
-    return can->port->send(can->port_ctx, &frame);
-}
-
+/* A bridged line's frame: one the port refuses is the line's bus error (C33). */
 static daran_result_t send_or_fail(daran_can_bridge_t *bridge, uint32_t node, uint32_t code,
                                    const uint8_t *data)
 {
-    return send_frame(bridge, node, code, data) ? DARAN_OK : DARAN_ERR_BUS_ERROR;
+    return daran_can_transmit(bridge->can, node << 5 | code, data) ? DARAN_OK
+                                                                   : DARAN_ERR_BUS_ERROR;
 }
 
 /* ---- queries: reads one at a time ---- */
@@ -299,8 +289,6 @@ static daran_result_t send_motion(daran_can_bridge_t *bridge, daran_shape_t shap
 {
     static const daran_prop_t limits[] = {DARAN_PROP_TRAP_TRAJ_VEL_LIMIT,
                                           DARAN_PROP_TRAP_TRAJ_ACCEL_LIMIT};
-    static const uint8_t code_of[] = {DARAN_CAN_TRACK, DARAN_CAN_TRAPEZOID, DARAN_CAN_PASSTHROUGH,
-                                      DARAN_CAN_VELOCITY, DARAN_CAN_TORQUE, DARAN_CAN_PRESET};
     float *values = bridge->values;
     uint8_t count = bridge->given;
     /* omitted optional values: 0, and mode 1 for v and c (5.2) */
@@ -352,7 +340,8 @@ static daran_result_t send_motion(daran_can_bridge_t *bridge, daran_shape_t shap
         result = put_scaled_pair(data, values[1], values[2]);
         break;
     }
-    return result == DARAN_OK ? send_or_fail(bridge, node, code_of[shape], data) : result;
+    return result == DARAN_OK ? send_or_fail(bridge, node, DARAN_CAN_TRACK + (uint32_t)shape, data)
+                              : result;
 }
 
 /* The frames of a line whose values parse_line() kept (5.2). */

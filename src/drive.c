@@ -204,22 +204,21 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
 #if DARAN_ENABLE_CAN_BRIDGE
     if ((elsewhere || broadcast) && daran_bridge_active(drive)) {
         /* Checked like a line for this drive, then sent; a broadcast then
-         * runs here too (C31, C34). A port command has no CAN form. */
+         * runs here too, below (C31, C34). A port command has no CAN form:
+         * for another id it is not bridged, a broadcast one runs here alone. */
         if (port != NULL) {
-            return elsewhere ? DARAN_ERR_NOT_BRIDGED : daran_from_hal(port->handler(drive, &request, drive->port_ctx));
-        }
-        if (!count_ok) {
+            if (elsewhere) {
+                return DARAN_ERR_NOT_BRIDGED;
+            }
+        } else if (!count_ok) {
             return DARAN_ERR_INVALID_FORMAT;
-        }
-        if (property != DARAN_OK) {
+        } else if (property != DARAN_OK) {
             return property;
-        }
-        result = daran_bridge_line(drive->bridge, &request, broadcast);
-        if (elsewhere || result != DARAN_OK) {
+        } else if ((result = daran_bridge_line(drive->bridge, &request, broadcast)) != DARAN_OK ||
+                   elsewhere) {
             return result;
         }
-        return daran_run_command(drive, &request);
-    }
+    } else
 #endif
     if ((elsewhere || broadcast) && drive->forward != NULL) {
         drive->forward(drive->forward_ctx, request.motor, line->text, line->len);
