@@ -208,32 +208,15 @@ static bool link_failed(daran_result_t result, const daran_client_outcome_t *out
             result == DARAN_ERR_INVALID_CHECKSUM || result == DARAN_ERR_INVALID_VALUE);
 }
 
-daran_result_t daran_client_transact(daran_client_link_t *link,
-                                     const daran_client_request_t *request, uint32_t timeout_ms,
-                                     daran_client_line_fn on_line, void *line_ctx,
-                                     daran_client_outcome_t *outcome)
+/* Send link->tx[0..len) and collect its reply; `attempts` sends at most. */
+static daran_result_t exchange(daran_client_link_t *link, size_t len,
+                               daran_client_reply_shape_t shape, unsigned attempts,
+                               uint32_t timeout_ms, daran_client_line_fn on_line, void *line_ctx,
+                               daran_client_outcome_t *outcome)
 {
-    daran_client_outcome_t local;
-    if (outcome == NULL) {
-        outcome = &local;
-    }
-    outcome->drive_error = false;
-    outcome->attempts = 0;
-    outcome->lines = 0;
-    if (link == NULL || link->transport == NULL || request == NULL) {
-        return DARAN_ERR_BAD_ARGUMENT;
-    }
-    size_t len = 0;
-    daran_result_t result =
-        daran_client_build(request, link->config.checksum, link->tx, sizeof link->tx, &len);
-    if (result != DARAN_OK) {
-        return result;
-    }
     link->last_len = 0;
     /* whatever arrived before this request is not its reply */
     drain(link, now_ms(link));
-    daran_client_reply_shape_t shape = daran_client_reply_shape(request->command);
-    unsigned attempts = daran_client_may_retry(request->command) ? 1u + link->config.retries : 1u;
     for (;;) {
         outcome->attempts++;
         if (!link->transport->write(link->transport->ctx, link->tx, len)) {
@@ -243,7 +226,7 @@ daran_result_t daran_client_transact(daran_client_link_t *link,
             return DARAN_OK;
         }
         outcome->lines = 0;
-        result = collect(link, shape, timeout_ms, on_line, line_ctx, outcome);
+        daran_result_t result = collect(link, shape, timeout_ms, on_line, line_ctx, outcome);
         if (result == DARAN_OK || !link_failed(result, outcome)) {
             return result;
         }
@@ -255,4 +238,63 @@ daran_result_t daran_client_transact(daran_client_link_t *link,
             return result;
         }
     }
+}
+
+static daran_client_outcome_t *outcome_reset(daran_client_outcome_t *outcome,
+                                             daran_client_outcome_t *local)
+{
+    if (outcome == NULL) {
+        outcome = local;
+    }
+    outcome->drive_error = false;
+    outcome->attempts = 0;
+    outcome->lines = 0;
+    return outcome;
+}
+
+daran_result_t daran_client_transact(daran_client_link_t *link,
+                                     const daran_client_request_t *request, uint32_t timeout_ms,
+                                     daran_client_line_fn on_line, void *line_ctx,
+                                     daran_client_outcome_t *outcome)
+{
+    daran_client_outcome_t local;
+    outcome = outcome_reset(outcome, &local);
+    if (link == NULL || link->transport == NULL || request == NULL) {
+        return DARAN_ERR_BAD_ARGUMENT;
+    }
+    size_t len = 0;
+    daran_result_t result =
+        daran_client_build(request, link->config.checksum, link->tx, sizeof link->tx, &len);
+    if (result != DARAN_OK) {
+        return result;
+    }
+    unsigned attempts = daran_client_may_retry(request->command) ? 1u + link->config.retries : 1u;
+    return exchange(link, len, daran_client_reply_shape(request->command), attempts, timeout_ms,
+                    on_line, line_ctx, outcome);
+}
+
+daran_result_t daran_client_transact_line(daran_client_link_t *link, const char *payload,
+                                          size_t payload_len, daran_client_reply_shape_t shape,
+                                          uint32_t timeout_ms, daran_client_line_fn on_line,
+                                          void *line_ctx, daran_client_outcome_t *outcome)
+{
+    daran_client_outcome_t local;
+    outcome = outcome_reset(outcome, &local);
+    if (link == NULL || link->transport == NULL || payload == NULL ||
+        shape > DARAN_CLIENT_REPLY_UNTIL_QUIET) {
+        return DARAN_ERR_BAD_ARGUMENT;
+    }
+    if (payload_len >= sizeof link->tx) {
+        return DARAN_ERR_LINE_TOO_LONG;
+    }
+    for (size_t i = 0; i < payload_len; i++) {
+        link->tx[i] = payload[i];
+    }
+    size_t len = 0;
+    daran_result_t result = daran_client_seal(link->tx, sizeof link->tx, payload_len,
+                                              link->config.checksum, &len);
+    if (result != DARAN_OK) {
+        return result;
+    }
+    return exchange(link, len, shape, 1u, timeout_ms, on_line, line_ctx, outcome);
 }

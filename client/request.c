@@ -50,6 +50,62 @@ bool daran_client_may_retry(daran_client_command_t command)
     return daran_client_command_class(command) == DARAN_CLIENT_CLASS_QUERY;
 }
 
+/* The field after position *at in text[0..len): its start and length, *at
+ * moved past it; false when there is none. */
+static bool next_field(const char *text, size_t len, size_t *at, const char **field,
+                       size_t *field_len)
+{
+    size_t i = *at;
+    while (i < len && (text[i] == ' ' || text[i] == '\t')) {
+        i++;
+    }
+    size_t start = i;
+    while (i < len && text[i] != ' ' && text[i] != '\t') {
+        i++;
+    }
+    *at = i;
+    *field = text + start;
+    *field_len = i - start;
+    return i > start;
+}
+
+static bool same_word(const char *field, size_t len, const char *word)
+{
+    size_t i = 0;
+    while (i < len && word[i] != '\0' && word[i] == field[i]) {
+        i++;
+    }
+    return i == len && word[i] == '\0';
+}
+
+daran_client_reply_shape_t daran_client_line_shape(const char *payload, size_t len, bool *known)
+{
+    bool unused;
+    known = known != NULL ? known : &unused;
+    *known = false;
+    size_t at = 0;
+    const char *word;
+    size_t word_len;
+    if (payload == NULL || !next_field(payload, len, &at, &word, &word_len)) {
+        return DARAN_CLIENT_REPLY_SILENT;
+    }
+    for (unsigned c = 0; c < (unsigned)DARAN_CLIENT_CMD_COUNT; c++) {
+        if (!same_word(word, word_len, commands[c].word)) {
+            continue;
+        }
+        *known = true;
+        const char *field;
+        size_t field_len;
+        if (c == (unsigned)DARAN_CLIENT_CMD_H && next_field(payload, len, &at, &field, &field_len) &&
+            next_field(payload, len, &at, &field, &field_len) &&
+            same_word(field, field_len, "properties")) {
+            return DARAN_CLIENT_REPLY_UNTIL_END;
+        }
+        return commands[c].shape;
+    }
+    return DARAN_CLIENT_REPLY_SILENT;
+}
+
 /* The SYSTEM rows' paths as one NUL-separated block, from the core's list:
  * the scope token picks whether a row contributes its path. */
 #define SCOPE_PATH_SYSTEM(path) path "\0"

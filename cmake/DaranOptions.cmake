@@ -9,6 +9,7 @@ endif()
 
 option(DARAN_BUILD_TESTS "Build the unit and transcript tests" ${_daran_top_level})
 option(DARAN_BUILD_SIM "Build the simulated drive (host only)" ${_daran_top_level})
+option(DARAN_BUILD_CLI "Build daran, the command-line tool (host only; needs libedit-dev)" ${_daran_top_level})
 option(DARAN_BUILD_DEMO "Build the example programs" ${_daran_top_level})
 option(DARAN_SANITIZE "Build everything with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
 # A project that pulls the library in with add_subdirectory() may name its

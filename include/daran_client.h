@@ -396,6 +396,26 @@ DARAN_NODISCARD daran_result_t daran_client_transact(daran_client_link_t *link,
                                                      daran_client_line_fn on_line, void *line_ctx,
                                                      daran_client_outcome_t *outcome);
 
+/** Send a line the caller wrote (payload[0..payload_len), no line end),
+ * ended with ` *N` when the link's config asks for checksums, and collect a
+ * reply of `shape` exactly as daran_client_transact() does; sent once, never
+ * retried (the caller's line may move a motor). For a raw console
+ * (`daran send`): the drive's answer to a malformed line is its own.
+ * DARAN_ERR_LINE_TOO_LONG when the line does not fit the link's buffer. */
+DARAN_NODISCARD daran_result_t daran_client_transact_line(daran_client_link_t *link,
+                                                          const char *payload, size_t payload_len,
+                                                          daran_client_reply_shape_t shape,
+                                                          uint32_t timeout_ms,
+                                                          daran_client_line_fn on_line,
+                                                          void *line_ctx,
+                                                          daran_client_outcome_t *outcome);
+
+/** The reply shape of a line by its command word (and `h id properties`'s
+ * third field); SILENT for a word the protocol does not have, which the
+ * drive answers with `error: unknown command` unless it is a port's own.
+ * *known tells the two apart (may be NULL). O(len). */
+daran_client_reply_shape_t daran_client_line_shape(const char *payload, size_t len, bool *known);
+
 /** Read whatever the transport holds now (no waiting): telemetry reports to
  * on_report, other lines to on_stray. For a host that streams. O(bytes). */
 void daran_client_link_service(daran_client_link_t *link);

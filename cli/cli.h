@@ -1,0 +1,181 @@
+/* daran, the command-line tool (docs/cli.md): what its parts share.
+ *
+ * A session is one opened port with a daran_client link over it. Commands
+ * get a session and their own arguments and return an exit status; every
+ * failure is reported once, as one line on stderr, by the function that
+ * found it (cli_fail). Output for people goes to stdout; with --json each
+ * command prints one JSON document instead. */
+#ifndef DARAN_CLI_H
+#define DARAN_CLI_H
+
+#include <signal.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "daran_client.h"
+
+/** The exit statuses (docs/cli.md, "Exit status"). */
+typedef enum cli_status {
+    CLI_OK = 0,          /**< done */
+    CLI_DRIVE_ERROR = 1, /**< a drive answered `error: …`, or refused what was asked */
+    CLI_USAGE = 2,       /**< the command line is wrong */
+    CLI_NO_REPLY = 3,    /**< no (readable) reply in time */
+    CLI_PORT_ERROR = 4   /**< the port could not be found, opened, read or written */
+} cli_status_t;
+
+/** The options every command shares. */
+typedef struct cli_options {
+    const char *port;    /**< NULL: $DARAN_PORT, else the one /dev/ttyACM* or /dev/ttyUSB* */
+    uint32_t baud;       /**< line speed; a pseudo-terminal ignores it */
+    bool checksum;       /**< send ` *N` and require it on every reply line */
+    uint32_t timeout_ms; /**< how long one request waits for its reply */
+    bool timeout_given;  /**< --timeout was on the command line */
+    bool json;           /**< one JSON document on stdout instead of text */
+} cli_options_t;
+
+#define CLI_DEFAULT_BAUD 115200u
+#define CLI_DEFAULT_TIMEOUT_MS 200u
+/** How long `h id`'s reply (no end marker) is taken to be over after a gap. */
+#define CLI_QUIET_MS 30u
+
+/** Where a telemetry report goes while a command runs. */
+typedef void (*cli_report_fn)(void *ctx, const daran_client_report_t *report);
+
+/** One opened port and its link. */
+typedef struct cli_session {
+    cli_options_t options;
+    char port_path[256];
+    int fd;
+    bool port_failed;      /**< the port reported an error (see port_errno) */
+    int port_errno;        /**< the errno of that error */
+    const char *port_what; /**< "read" or "write": what failed */
+    daran_client_transport_t transport;
+    daran_client_link_t link;
+    cli_report_fn on_report; /**< the command's report handler; NULL: reports are counted only */
+    void *report_ctx;
+    uint32_t reports_seen;   /**< reports read while no handler was set */
+    daran_client_line_fn on_stray; /**< lines outside any request; NULL: dropped */
+    void *stray_ctx;
+} cli_session_t;
+
+/* ------------------------------------------------------------ session.c */
+
+/** A session with these options, not connected yet. */
+void cli_session_init(cli_session_t *s, const cli_options_t *options);
+/** Open the port the options name (or find one) and set up the link, once:
+ * commands call it after checking their arguments, so a usage error is
+ * told before a missing port. Reports its own failure (CLI_PORT_ERROR,
+ * CLI_USAGE). */
+cli_status_t cli_session_connect(cli_session_t *s);
+/** Close the port. */
+void cli_session_close(cli_session_t *s);
+
+/** Send `request`, hand each reply line to on_line, and turn the result into
+ * an exit status. On failure one line goes to stderr naming the drive, the
+ * request and what happened, unless `quiet` (a caller that reports it
+ * itself, like `scan` for the ids that do not answer). *result (may be
+ * NULL) gets the link's result. */
+cli_status_t cli_transact(cli_session_t *s, const daran_client_request_t *request,
+                          daran_client_line_fn on_line, void *line_ctx, bool quiet,
+                          daran_result_t *result);
+
+/** Report the failure of a request made with `quiet` (status and result as
+ * cli_transact gave them) and return status. */
+cli_status_t cli_transact_failed(cli_session_t *s, const daran_client_request_t *request,
+                                 cli_status_t status, daran_result_t result);
+
+/** The exit status for a link result (`drive_error`: the drive sent it). */
+cli_status_t cli_status_of(daran_result_t result, bool drive_error);
+
+/** Print "daran: <message>" on stderr and return `status`. */
+cli_status_t cli_fail(cli_status_t status, const char *format, ...)
+    __attribute__((format(printf, 2, 3)));
+
+/** Catch SIGINT, SIGTERM and SIGHUP from now on, for a command that must
+ * clean up (watch, shell): they set cli_interrupted() and end any wait. */
+void cli_catch_signals(void);
+/** A caught signal came. */
+bool cli_interrupted(void);
+
+/** The request as text (no checksum, no line end), for messages. */
+size_t cli_request_text(const daran_client_request_t *request, char *buf, size_t size);
+/** Report the port's failure (s->port_errno) and return CLI_PORT_ERROR. */
+cli_status_t cli_port_status(cli_session_t *s);
+
+/** Wait up to ms for port input (0: only look), handing what arrives to the
+ * link (telemetry to the session's handler, other lines to on_stray).
+ * Returns early on a signal. */
+void cli_session_pump(cli_session_t *s, uint32_t ms);
+
+/** A millisecond clock (monotonic). */
+uint32_t cli_now_ms(void);
+
+/* ------------------------------------------------------------ readback.c */
+
+/** Write `value` to `path` of drive `id` and read it back in one round
+ * trip. CLI_OK: kept[] holds what the drive kept. CLI_DRIVE_ERROR: the
+ * drive refused the write, *refused says why (nothing reported: the caller
+ * words it; kept[] holds the value it still has when it could be read).
+ * Other statuses are reported here. */
+cli_status_t cli_write_read_back(cli_session_t *s, uint8_t id, const char *path,
+                                 const daran_client_value_t *value, char *kept, size_t kept_size,
+                                 daran_result_t *refused);
+
+/* ------------------------------------------------------------ args.c */
+
+/** Parse a motor id 1..63 (0 when allow_broadcast). false: not one. */
+bool cli_parse_id(const char *text, bool allow_broadcast, uint8_t *id);
+/** Parse a `w` value: an integer keeps its kind (UINT, or INT when
+ * negative), anything else is a float. false: not a number. */
+bool cli_parse_value(const char *text, daran_client_value_t *value);
+/** A view of one field of a line. */
+typedef struct cli_field {
+    const char *text;
+    size_t len;
+} cli_field_t;
+/** Split text[0..len) at blanks: how many fields (the first max in out). */
+size_t cli_split_fields(const char *text, size_t len, cli_field_t *out, size_t max);
+/** Parse seconds ("0.5") into milliseconds, 0..3,600,000. */
+bool cli_parse_seconds(const char *text, uint32_t *ms);
+
+/* ------------------------------------------------------------ json.c */
+
+/** Write s[0..len) as a JSON string. */
+void cli_json_string(FILE *out, const char *s, size_t len);
+/** Write a drive's number text as a JSON number (nan/inf as strings). */
+void cli_json_number(FILE *out, const char *s, size_t len);
+
+/* ------------------------------------------------------------ properties.c */
+
+#define CLI_PATH_MAX 96u
+#define CLI_PROPERTIES_MAX 256u
+
+/** One property, as discovery lists it (`axis0.` in front of axis rows). */
+typedef struct cli_property {
+    char path[CLI_PATH_MAX];
+    daran_client_type_t type;
+    bool writable;
+    char unit[24];
+    char range[64];
+} cli_property_t;
+
+/** A drive's properties. */
+typedef struct cli_property_list {
+    cli_property_t items[CLI_PROPERTIES_MAX];
+    size_t count;
+    bool from_drive; /**< from `h id properties` (else the built-in vendor table) */
+} cli_property_list_t;
+
+/** The properties of drive `id` whose path starts with `prefix` (NULL: all):
+ * from the drive's discovery when it has it, else from the vendor's table
+ * built into the tool. Reports its own failure (no reply, port). */
+cli_status_t cli_properties_load(cli_session_t *s, uint8_t id, const char *prefix,
+                                 cli_property_list_t *out);
+/** The built-in table alone (no drive needed). */
+void cli_properties_builtin(const char *prefix, cli_property_list_t *out);
+/** The property of `path` (with or without `axisN.`) in the list; NULL if absent. */
+const cli_property_t *cli_property_find(const cli_property_list_t *list, const char *path);
+
+#endif /* DARAN_CLI_H */

@@ -1,0 +1,252 @@
+/* A session: the port, the link over it, and the one place where a link
+ * result becomes an exit status and a message (cli.h). */
+#include <errno.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "serial.h"
+
+static volatile sig_atomic_t interrupted;
+
+static void on_signal(int signo)
+{
+    (void)signo;
+    interrupted = 1;
+}
+
+bool cli_interrupted(void)
+{
+    return interrupted != 0;
+}
+
+void cli_catch_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0; /* no SA_RESTART: a waiting poll() returns at once */
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
+}
+
+cli_status_t cli_fail(cli_status_t status, const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    fputs("daran: ", stderr);
+    vfprintf(stderr, format, args);
+    fputc('\n', stderr);
+    va_end(args);
+    return status;
+}
+
+static void session_report(void *ctx, const daran_client_report_t *report)
+{
+    cli_session_t *s = ctx;
+    if (s->on_report != NULL) {
+        s->on_report(s->report_ctx, report);
+    } else {
+        s->reports_seen++;
+    }
+}
+
+static void session_stray(void *ctx, const daran_client_line_t *line)
+{
+    cli_session_t *s = ctx;
+    if (s->on_stray != NULL) {
+        s->on_stray(s->stray_ctx, line);
+    }
+}
+
+static cli_status_t pick_port(cli_session_t *s, const cli_options_t *options)
+{
+    const char *path = options->port;
+    if (path == NULL || path[0] == '\0') {
+        path = getenv("DARAN_PORT");
+    }
+    if (path != NULL && path[0] != '\0') {
+        if (strlen(path) >= sizeof s->port_path) {
+            return cli_fail(CLI_USAGE, "port path too long: %s", path);
+        }
+        memcpy(s->port_path, path, strlen(path) + 1);
+        return CLI_OK;
+    }
+    char found[4][256];
+    size_t count = cli_serial_candidates(found, 4);
+    if (count == 0) {
+        return cli_fail(CLI_PORT_ERROR, "no port: no /dev/ttyACM* or /dev/ttyUSB* found; "
+                                        "name one with --port PATH or DARAN_PORT");
+    }
+    if (count > 1) {
+        return cli_fail(CLI_PORT_ERROR, "%zu ports found (%s, %s%s); name one with --port PATH "
+                                        "or DARAN_PORT", count, found[0], found[1],
+                        count > 2 ? ", …" : "");
+    }
+    memcpy(s->port_path, found[0], sizeof s->port_path);
+    return CLI_OK;
+}
+
+void cli_session_init(cli_session_t *s, const cli_options_t *options)
+{
+    memset(s, 0, sizeof *s);
+    s->fd = -1;
+    s->options = *options;
+}
+
+cli_status_t cli_session_connect(cli_session_t *s)
+{
+    if (s->fd >= 0) {
+        return CLI_OK;
+    }
+    const cli_options_t *options = &s->options;
+    cli_status_t status = pick_port(s, options);
+    if (status != CLI_OK) {
+        return status;
+    }
+    s->fd = cli_serial_open(s->port_path, options->baud);
+    if (s->fd < 0) {
+        return cli_fail(CLI_PORT_ERROR, "%s: cannot open: %s", s->port_path, strerror(errno));
+    }
+    cli_serial_transport(s);
+    daran_client_link_config_t config = {
+        .checksum = options->checksum,
+        .retries = 1,
+        .quiet_ms = CLI_QUIET_MS,
+        .on_report = session_report,
+        .report_ctx = s,
+        .on_stray = session_stray,
+        .stray_ctx = s,
+    };
+    if (daran_client_link_init(&s->link, &s->transport, &config) != DARAN_OK) {
+        cli_session_close(s);
+        return cli_fail(CLI_PORT_ERROR, "%s: cannot set up the link", s->port_path);
+    }
+    return CLI_OK;
+}
+
+void cli_session_close(cli_session_t *s)
+{
+    if (s->fd >= 0) {
+        close(s->fd);
+        s->fd = -1;
+    }
+}
+
+cli_status_t cli_status_of(daran_result_t result, bool drive_error)
+{
+    if (result == DARAN_OK) {
+        return CLI_OK;
+    }
+    if (drive_error) {
+        return CLI_DRIVE_ERROR;
+    }
+    switch (result) {
+    case DARAN_ERR_BUS_ERROR:
+        return CLI_PORT_ERROR;
+    case DARAN_ERR_NO_REPLY:
+    case DARAN_ERR_CHECKSUM_MISMATCH:
+    case DARAN_ERR_INVALID_CHECKSUM:
+    case DARAN_ERR_INVALID_VALUE:
+        return CLI_NO_REPLY;
+    default:
+        return CLI_USAGE; /* the request could not be built */
+    }
+}
+
+size_t cli_request_text(const daran_client_request_t *request, char *buf, size_t size)
+{
+    size_t len = 0;
+    if (daran_client_build(request, false, buf, size, &len) != DARAN_OK || len == 0) {
+        (void)snprintf(buf, size, "?");
+        return 1;
+    }
+    buf[len - 1] = '\0'; /* the line end */
+    return len - 1;
+}
+
+static const char *damage_of(daran_result_t result)
+{
+    switch (result) {
+    case DARAN_ERR_CHECKSUM_MISMATCH:
+        return "its checksum is wrong";
+    case DARAN_ERR_INVALID_CHECKSUM:
+        return "it has no valid checksum";
+    default:
+        return "it cannot be read";
+    }
+}
+
+cli_status_t cli_port_status(cli_session_t *s)
+{
+    return cli_fail(CLI_PORT_ERROR, "%s: %s failed: %s", s->port_path,
+                    s->port_what != NULL ? s->port_what : "i/o", strerror(s->port_errno));
+}
+
+cli_status_t cli_transact_failed(cli_session_t *s, const daran_client_request_t *request,
+                                 cli_status_t status, daran_result_t result)
+{
+    if (s->port_failed) {
+        return cli_port_status(s);
+    }
+    char text[DARAN_CLIENT_LINE_MAX];
+    (void)cli_request_text(request, text, sizeof text);
+    switch (status) {
+    case CLI_OK:
+        return CLI_OK;
+    case CLI_DRIVE_ERROR:
+        return cli_fail(status, "drive %u refused \"%s\": %s", request->id, text,
+                        daran_result_phrase(result));
+    case CLI_NO_REPLY:
+        if (cli_interrupted()) {
+            return cli_fail(status, "interrupted while waiting for \"%s\"", text);
+        }
+        if (result == DARAN_ERR_NO_REPLY) {
+            return cli_fail(status, "drive %u did not answer \"%s\" within %u ms on %s",
+                            request->id, text, (unsigned)s->options.timeout_ms, s->port_path);
+        }
+        return cli_fail(status, "drive %u's reply to \"%s\" on %s was damaged: %s", request->id,
+                        text, s->port_path, damage_of(result));
+    case CLI_PORT_ERROR:
+        return cli_fail(status, "%s: cannot write \"%s\"", s->port_path, text);
+    default:
+        return cli_fail(status, "cannot build the request \"%s\": %s", text,
+                        daran_result_phrase(result));
+    }
+}
+
+cli_status_t cli_transact(cli_session_t *s, const daran_client_request_t *request,
+                          daran_client_line_fn on_line, void *line_ctx, bool quiet,
+                          daran_result_t *result)
+{
+    daran_client_outcome_t outcome;
+    daran_result_t r = daran_client_transact(&s->link, request, s->options.timeout_ms, on_line,
+                                             line_ctx, &outcome);
+    if (result != NULL) {
+        *result = r;
+    }
+    cli_status_t status = s->port_failed ? CLI_PORT_ERROR : cli_status_of(r, outcome.drive_error);
+    if (status == CLI_OK || quiet) {
+        return status;
+    }
+    return cli_transact_failed(s, request, status, r);
+}
+
+void cli_session_pump(cli_session_t *s, uint32_t ms)
+{
+    uint32_t start = cli_now_ms();
+    for (;;) {
+        daran_client_link_service(&s->link);
+        uint32_t waited = cli_now_ms() - start;
+        if (waited >= ms || cli_interrupted() || s->port_failed) {
+            return;
+        }
+        /* wait for input without taking it: the link reads it next round */
+        cli_serial_wait(s, ms - waited);
+    }
+}

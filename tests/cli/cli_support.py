@@ -1,0 +1,141 @@
+"""What the tests of `daran` (the CLI) share: daran-sim on a pseudo-terminal
+(--pty, one or more drives, --nvm when asked), running `daran` against it,
+and a man in the middle that can cut the link. Paths come from the
+environment CTest sets: DARAN_CLI (the tool), DARAN_SIM (daran-sim).
+stdlib only; run by /usr/bin/python3."""
+import os
+import pty
+import select
+import subprocess
+import threading
+import time
+import tty
+import unittest
+
+DARAN = os.environ.get("DARAN_CLI", "daran")
+SIM = os.environ.get("DARAN_SIM", "daran-sim")
+
+
+class Sim:
+    """daran-sim --pty with @drives drives (and @options); .path is its
+    pseudo-terminal. Its stdout (replies to lines typed on its stdin) and
+    stderr are read in the background so it never blocks."""
+
+    def __init__(self, drives=1, options=()):
+        self.proc = subprocess.Popen([SIM, "--pty", "--drives", str(drives)] + list(options),
+                                     stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                     stderr=subprocess.PIPE)
+        self.path = self.proc.stdout.readline().decode().strip()
+        if not self.path.startswith("/dev/"):
+            raise RuntimeError("daran-sim printed no pty path: %r" % self.path)
+        self.console = []
+        self.errors = []
+        for stream, into in ((self.proc.stdout, self.console), (self.proc.stderr, self.errors)):
+            threading.Thread(target=self._drain, args=(stream, into), daemon=True).start()
+
+    @staticmethod
+    def _drain(stream, into):
+        for line in stream:
+            into.append(line.decode(errors="replace").rstrip("\n"))
+
+    def directive(self, line):
+        """A line on daran-sim's stdin: a directive (`!fault 1 overtemp`)."""
+        self.proc.stdin.write((line + "\n").encode())
+        self.proc.stdin.flush()
+
+    def stop(self):
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            try:
+                self.proc.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.stop()
+
+
+def daran(port, *args, stdin=None, timeout=60, env=None):
+    """Run `daran --port PORT ARGS...`; the CompletedProcess (text)."""
+    environment = dict(os.environ)
+    environment.pop("DARAN_PORT", None)
+    if env:
+        environment.update(env)
+    command = [DARAN] + (["--port", port] if port else []) + [str(a) for a in args]
+    return subprocess.run(command, input=stdin, capture_output=True, text=True, timeout=timeout,
+                          env=environment)
+
+
+class Proxy:
+    """A pseudo-terminal of our own between `daran` and the drive's: .path
+    is what daran opens. Bytes flow both ways; `cut_after(n)` lets n more
+    bytes of the drive's side through, then closes daran's side (the link
+    drops mid-reply); `drop_replies()` stops passing the drive's bytes
+    (a drive that went silent)."""
+
+    def __init__(self, drive_path):
+        self.master, slave = pty.openpty()
+        tty.setraw(slave)
+        self.path = os.ttyname(slave)
+        self._slave = slave
+        self.drive = os.open(drive_path, os.O_RDWR | os.O_NOCTTY)
+        tty.setraw(self.drive)
+        self.budget = None
+        self.silent = False
+        self.closed = False
+        self._stop = False
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+
+    def cut_after(self, n):
+        self.budget = n
+
+    def drop_replies(self):
+        self.silent = True
+
+    def _run(self):
+        while not self._stop and not self.closed:
+            ready, _, _ = select.select([self.master, self.drive], [], [], 0.05)
+            for fd in ready:
+                try:
+                    data = os.read(fd, 4096)
+                except OSError:
+                    continue
+                if fd == self.master:
+                    os.write(self.drive, data)
+                    continue
+                if self.silent:
+                    continue
+                if self.budget is not None:
+                    data = data[:self.budget]
+                    self.budget -= len(data)
+                os.write(self.master, data)
+                if self.budget == 0:
+                    time.sleep(0.05)
+                    os.close(self.master)
+                    os.close(self._slave)
+                    self.closed = True
+                    break
+
+    def close(self):
+        self._stop = True
+        self.thread.join(timeout=2)
+        for fd in ([] if self.closed else [self.master, self._slave]) + [self.drive]:
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
+def main():
+    unittest.main(verbosity=2)
