@@ -42,6 +42,8 @@ static bool parse_range(const char *text, uint8_t *first, uint8_t *last)
            *first <= *last;
 }
 
+static cli_status_t scan_ids(cli_session_t *s, uint8_t first, uint8_t last);
+
 static cli_status_t run_scan(cli_session_t *s, int argc, char **argv)
 {
     uint8_t first = 1;
@@ -53,10 +55,23 @@ static cli_status_t run_scan(cli_session_t *s, int argc, char **argv)
     if (status != CLI_OK) {
         return status;
     }
+    /* An id nobody has would cost every attempt and the quiet gap after it;
+     * a late answer still goes to the stray handler, never to the next id. */
+    uint32_t saved_timeout = s->options.timeout_ms;
+    daran_client_link_config_t saved_config = s->link.config;
     if (!s->options.timeout_given) {
         s->options.timeout_ms = SCAN_TIMEOUT_MS;
     }
-    s->link.config.retries = 0; /* an id nobody has would cost every attempt */
+    s->link.config.retries = 0;
+    s->link.config.quiet_ms = 5;
+    status = scan_ids(s, first, last);
+    s->options.timeout_ms = saved_timeout;
+    s->link.config = saved_config;
+    return status;
+}
+
+static cli_status_t scan_ids(cli_session_t *s, uint8_t first, uint8_t last)
+{
     size_t found = 0;
     if (s->options.json) {
         fputs("{\"drives\":[", stdout);

@@ -278,14 +278,26 @@ static void check(void)
                 memcmp(wire, canned, canned_len) == 0);
 }
 
-static void say(const char *label, const char *line, size_t len)
+/* Text without its line end. */
+static size_t text_len(const char *text, size_t len)
 {
-    while (len > 0u && (line[len - 1u] == '\n' || line[len - 1u] == '\r')) {
+    while (len > 0u && (text[len - 1u] == '\n' || text[len - 1u] == '\r')) {
         len--;
     }
+    return len;
+}
+
+/* One row of the table: `label<TAB>line`, and ` -> answer` when there is one. */
+static void say(const char *label, const char *line, size_t len, const char *answer,
+                size_t answer_len)
+{
     daran_board_uart0_write(label, strlen(label));
     daran_board_uart0_write("\t", 1u);
-    daran_board_uart0_write(line, len);
+    daran_board_uart0_write(line, text_len(line, len));
+    if (answer_len > 0u) {
+        daran_board_uart0_write(" -> ", 4u);
+        daran_board_uart0_write(answer, text_len(answer, answer_len));
+    }
     daran_board_uart0_write("\n", 1u);
 }
 
@@ -353,7 +365,9 @@ int main(void)
     }
     for (size_t i = 0; i < STEP_COUNT; i++) {
         size_t len = steps[i].len != 0u ? steps[i].len : strlen(steps[i].line);
-        say(steps[i].label, steps[i].line, len);
+        /* the transactions show the core's answer (port/minimal's factory values) */
+        size_t answer_len = i >= STEP_TRANSACT ? canned_len : 0u;
+        say(steps[i].label, steps[i].line, len, canned, answer_len);
     }
     daran_board_exit(0);
 }

@@ -2,8 +2,10 @@
 # Packaging and configuration suite (issue 8), run by tools/test:
 #   1. the API reference builds with no doxygen warning;
 #   2. `cmake --install` of a release build, then three consumers build and run
-#      against it (find_package, add_subdirectory, pkg-config), and the
-#      package's version file answers SameMajorVersion;
+#      against it (find_package, add_subdirectory, pkg-config), a master-side
+#      one links daran_ascii::daran_client from the prefix (find_package only:
+#      daran_ascii.pc names the core alone), and the package's version file
+#      answers SameMajorVersion;
 #   3. an install built with a user options header (DARAN_CONFIG_HEADER) still
 #      agrees with its consumers, and one built with other options is refused;
 #   4. seven daran_config.h configurations (defaults, the issue's (b) and (c),
@@ -99,6 +101,8 @@ step "install: version file is SameMajorVersion (0.1 yes, 1.0 no)" \
   cmake -DPREFIX="$prefix" -P tests/consumer/version_check.cmake
 step "consumer: find_package(daran_ascii CONFIG) from the prefix" \
   consumer_cmake tests/consumer/find_package "$work/consumer-find" -DCMAKE_PREFIX_PATH="$prefix"
+step "consumer: daran_ascii::daran_client from the prefix builds, reads and talks to a core" \
+  "$work/consumer-find/client_consumer"
 step "consumer: add_subdirectory of the source tree" \
   consumer_cmake tests/consumer/add_subdirectory "$work/consumer-subdir" -DDARAN_SOURCE_DIR="$repo"
 step "consumer: cc \$(pkg-config --cflags --libs daran_ascii)" \
@@ -165,6 +169,8 @@ step "install: core built with DARAN_CONFIG_HEADER=tests/config/config_c.h" \
   install_core "$work/core-c" "$prefix_c" -DDARAN_CONFIG_HEADER="$repo/tests/config/config_c.h"
 step "consumer: find_package of the configured install agrees on DARAN_LINE_MAX 256" \
   consumer_cmake tests/consumer/find_package "$work/consumer-find-c" -DCMAKE_PREFIX_PATH="$prefix_c"
+step "consumer: daran_ascii::daran_client of the configured install talks to its core" \
+  "$work/consumer-find-c/client_consumer"
 step "consumer: pkg-config of the configured install agrees on DARAN_LINE_MAX 256" \
   consumer_pkg_config "$prefix_c" "$work/consumer-pc-c"
 
