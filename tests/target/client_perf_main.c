@@ -365,8 +365,9 @@ int main(void)
     }
     for (size_t i = 0; i < STEP_COUNT; i++) {
         size_t len = steps[i].len != 0u ? steps[i].len : strlen(steps[i].line);
-        /* the transactions show the core's answer (port/minimal's factory values) */
-        size_t answer_len = i >= STEP_TRANSACT ? canned_len : 0u;
+        /* the transactions show the core's answer (port/minimal's factory
+         * values; the checksummed one gets it with its `*N`) */
+        size_t answer_len = i >= STEP_TRANSACT && i != STEP_TRANSACT_CHECKSUM ? canned_len : 0u;
         say(steps[i].label, steps[i].line, len, canned, answer_len);
     }
     daran_board_exit(0);
