@@ -1,5 +1,7 @@
 /* daran_client's reply shapes and retry rule: what each command is answered
  * with when it succeeds, and that only queries are ever sent twice. */
+#include <string.h>
+
 #include "daran_client.h"
 #include "unity.h"
 
@@ -84,11 +86,49 @@ static void test_a_value_outside_the_enum_gets_the_safe_answers(void)
     TEST_ASSERT_FALSE(daran_client_may_retry(bogus));
 }
 
+/* A raw line's reply shape comes from its first word (and `properties` as
+ * the third field of `h`), whatever blanks stand between the fields. */
+static void test_a_raw_lines_shape_comes_from_its_word(void)
+{
+    static const struct {
+        const char *line;
+        daran_client_reply_shape_t shape;
+        bool known;
+    } lines[] = {
+        {"t 1 10 0 25", DARAN_CLIENT_REPLY_SILENT, true},
+        {"  f 1", DARAN_CLIENT_REPLY_ONE_LINE, true},
+        {"r axis1.vbus_voltage", DARAN_CLIENT_REPLY_ONE_LINE, true},
+        {"e\t2", DARAN_CLIENT_REPLY_ERROR_LINES, true},
+        {"h 1", DARAN_CLIENT_REPLY_UNTIL_QUIET, true},
+        {"h 1 properties", DARAN_CLIENT_REPLY_UNTIL_END, true},
+        {"h  1  properties axis0.telemetry", DARAN_CLIENT_REPLY_UNTIL_END, true},
+        {"h 1 propertiesx", DARAN_CLIENT_REPLY_UNTIL_QUIET, true},
+        {"ms 1 1 2 3", DARAN_CLIENT_REPLY_SILENT, true},
+        {"mss 1", DARAN_CLIENT_REPLY_SILENT, false},
+        {"m 1", DARAN_CLIENT_REPLY_SILENT, false},
+        {"blink 1", DARAN_CLIENT_REPLY_SILENT, false},
+        {"", DARAN_CLIENT_REPLY_SILENT, false},
+        {"   ", DARAN_CLIENT_REPLY_SILENT, false},
+    };
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        bool known = !lines[i].known;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(lines[i].shape,
+                                      daran_client_line_shape(lines[i].line,
+                                                              strlen(lines[i].line), &known),
+                                      lines[i].line);
+        TEST_ASSERT_EQUAL_MESSAGE(lines[i].known, known, lines[i].line);
+    }
+    /* only len bytes are read: "f 1" cut to "f" is still f */
+    TEST_ASSERT_EQUAL_INT(DARAN_CLIENT_REPLY_ONE_LINE, daran_client_line_shape("fx", 1, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_CLIENT_REPLY_SILENT, daran_client_line_shape(NULL, 3, NULL));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_every_command_has_its_reply_shape_and_class);
     RUN_TEST(test_only_queries_may_be_retried);
     RUN_TEST(test_a_value_outside_the_enum_gets_the_safe_answers);
+    RUN_TEST(test_a_raw_lines_shape_comes_from_its_word);
     return UNITY_END();
 }

@@ -436,6 +436,66 @@ static void test_a_link_is_not_opened_on_a_half_transport(void)
                           daran_client_transact(&link, NULL, TIMEOUT_MS, NULL, NULL, NULL));
 }
 
+/* A raw line goes out as written (sealed when the link wants checksums),
+ * once, and its reply is collected by the shape the caller gives. */
+static void test_a_raw_line_is_sent_once_and_its_reply_collected(void)
+{
+    for (int checksum = 0; checksum < 2; checksum++) {
+        open_link(checksum != 0, 2);
+        lines_received = 0;
+        got_count = 0;
+        static const char line[] = "r axis1.output_shaft.vel_limit";
+        daran_client_outcome_t outcome;
+        TEST_ASSERT_EQUAL_INT(DARAN_OK,
+                              daran_client_transact_line(&link, line, sizeof line - 1u,
+                                                         DARAN_CLIENT_REPLY_ONE_LINE, TIMEOUT_MS,
+                                                         on_line, NULL, &outcome));
+        TEST_ASSERT_EQUAL_UINT32(1, lines_received);
+        TEST_ASSERT_EQUAL_UINT64(1, got_count);
+        TEST_ASSERT_EQUAL_UINT8(1, outcome.attempts);
+        /* the drive answers a checksummed request with a checksummed line,
+         * which read_line verified and cut off */
+        daran_client_line_t reply;
+        TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_client_read_line(got[0], strlen(got[0]), false,
+                                                               &reply));
+        TEST_ASSERT_FALSE(reply.had_checksum);
+        /* the drive's own error for a malformed line comes back as itself */
+        static const char bad[] = "t 1 nonsense";
+        TEST_ASSERT_EQUAL_INT(DARAN_ERR_INVALID_VALUE,
+                              daran_client_transact_line(&link, bad, sizeof bad - 1u,
+                                                         DARAN_CLIENT_REPLY_SILENT, TIMEOUT_MS,
+                                                         NULL, NULL, &outcome));
+        TEST_ASSERT_TRUE(outcome.drive_error);
+    }
+    /* a lost reply is not sent again, even for a query */
+    damage_lines = 1;
+    lines_received = 0;
+    daran_client_outcome_t outcome;
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_CHECKSUM_MISMATCH,
+                          daran_client_transact_line(&link, "f 1", 3, DARAN_CLIENT_REPLY_ONE_LINE,
+                                                     TIMEOUT_MS, NULL, NULL, &outcome));
+    TEST_ASSERT_EQUAL_UINT8(1, outcome.attempts);
+    TEST_ASSERT_EQUAL_UINT32(1, lines_received);
+    /* misuse and a line too long for the link */
+    char long_line[DARAN_CLIENT_LINE_MAX];
+    memset(long_line, 'x', sizeof long_line);
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_LINE_TOO_LONG,
+                          daran_client_transact_line(&link, long_line, sizeof long_line,
+                                                     DARAN_CLIENT_REPLY_SILENT, TIMEOUT_MS, NULL,
+                                                     NULL, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_LINE_TOO_LONG,
+                          daran_client_transact_line(&link, long_line, sizeof long_line - 3u,
+                                                     DARAN_CLIENT_REPLY_SILENT, TIMEOUT_MS, NULL,
+                                                     NULL, NULL)); /* no room for " *N\n" */
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT,
+                          daran_client_transact_line(&link, NULL, 0, DARAN_CLIENT_REPLY_SILENT,
+                                                     TIMEOUT_MS, NULL, NULL, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT,
+                          daran_client_transact_line(&link, "f 1", 3,
+                                                     (daran_client_reply_shape_t)99, TIMEOUT_MS,
+                                                     NULL, NULL, NULL));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -458,5 +518,6 @@ int main(void)
     RUN_TEST(test_a_port_that_cannot_write_is_a_bus_error);
     RUN_TEST(test_a_line_too_long_for_the_link_is_dropped);
     RUN_TEST(test_a_link_is_not_opened_on_a_half_transport);
+    RUN_TEST(test_a_raw_line_is_sent_once_and_its_reply_collected);
     return UNITY_END();
 }
