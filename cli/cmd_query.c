@@ -281,8 +281,8 @@ static cli_status_t run_set(cli_session_t *s, int argc, char **argv)
         }
         if (s->options.json) {
             json_path_head((size_t)(i / 2), argv[i]);
-            fputs(",\"asked\":", stdout);
-            cli_json_number(stdout, argv[i + 1], strlen(argv[i + 1]));
+            fputs(",\"asked\":", stdout); /* the user's text, which JSON may not take as a number */
+            cli_json_string(stdout, argv[i + 1], strlen(argv[i + 1]));
             if (kept[0] != '\0') {
                 fputs(",\"kept\":", stdout);
                 cli_json_number(stdout, kept, strlen(kept));
