@@ -416,8 +416,20 @@ static cli_status_t run_send(cli_session_t *s, int argc, char **argv)
         }
     } else {
         char line[DARAN_CLIENT_LINE_MAX + 2];
+        unsigned long number = 0;
         while (worst != CLI_PORT_ERROR && fgets(line, sizeof line, stdin) != NULL) {
-            status = send_one(s, line, strlen(line), index++);
+            size_t len = strlen(line);
+            number++;
+            if (len == sizeof line - 1 && line[len - 1] != '\n') {
+                /* longer than any line a drive takes: skipped whole, never sent in pieces */
+                int c;
+                while ((c = getchar()) != EOF && c != '\n') {
+                }
+                status = cli_fail(CLI_USAGE, "standard input line %lu: longer than %u bytes, "
+                                             "not sent", number, (unsigned)DARAN_CLIENT_LINE_MAX);
+            } else {
+                status = send_one(s, line, len, index++);
+            }
             worst = worst != CLI_OK ? worst : status;
         }
     }

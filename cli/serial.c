@@ -7,6 +7,7 @@
 #include <fcntl.h>
 #include <glob.h>
 #include <poll.h>
+#include <sys/file.h>
 #include <string.h>
 #include <termios.h>
 #include <time.h>
@@ -54,6 +55,13 @@ int cli_serial_open(const char *path, uint32_t baud)
     }
     int fd = open(path, O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
+        return -1;
+    }
+    /* Two programs reading one port would each get half of the replies. */
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        int saved = errno == EWOULDBLOCK ? EBUSY : errno;
+        close(fd);
+        errno = saved;
         return -1;
     }
     struct termios tio;

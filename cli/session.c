@@ -111,7 +111,8 @@ cli_status_t cli_session_connect(cli_session_t *s)
     }
     s->fd = cli_serial_open(s->port_path, options->baud);
     if (s->fd < 0) {
-        return cli_fail(CLI_PORT_ERROR, "%s: cannot open: %s", s->port_path, strerror(errno));
+        return cli_fail(CLI_PORT_ERROR, "%s: cannot open: %s", s->port_path,
+                        errno == EBUSY ? "another program is using it" : strerror(errno));
     }
     cli_serial_transport(s);
     daran_client_link_config_t config = {
