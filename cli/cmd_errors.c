@@ -23,6 +23,7 @@ typedef struct error_reply {
     daran_client_errors_t errors;
     size_t lines;
     bool unreadable;                 /* a line is not the register expected there */
+    size_t bad_line;                 /* which (from 1) */
     char bad[DARAN_CLIENT_LINE_MAX]; /* the first such line */
 } error_reply_t;
 
@@ -32,6 +33,7 @@ static void take_error_line(void *ctx, const daran_client_line_t *line)
     if (!r->unreadable && (r->lines >= REGISTERS ||
                            daran_client_parse_error_line(line, r->lines, &r->errors) != DARAN_OK)) {
         r->unreadable = true;
+        r->bad_line = r->lines + 1;
         (void)snprintf(r->bad, sizeof r->bad, "%.*s", (int)line->len, line->payload);
     }
     r->lines++;
@@ -47,13 +49,16 @@ static cli_status_t read_errors(cli_session_t *s, uint8_t id, daran_client_error
     if (status != CLI_OK) {
         return status;
     }
-    if (reply.unreadable || reply.lines != REGISTERS) {
-        /* the link counted seven lines, but they are not the registers */
+    /* the link collected seven lines; they must be the registers, in order */
+    if (reply.unreadable) {
         return cli_fail(CLI_NO_REPLY,
                         "drive %u's reply to \"e %u\" on %s is not its error registers "
                         "(line %zu: \"%s\")",
-                        id, id, s->port_path, reply.unreadable ? reply.lines : REGISTERS,
-                        reply.bad);
+                        id, id, s->port_path, reply.bad_line, reply.bad);
+    }
+    if (reply.lines != REGISTERS) {
+        return cli_fail(CLI_NO_REPLY, "drive %u's reply to \"e %u\" on %s has %zu lines, not %u",
+                        id, id, s->port_path, reply.lines, REGISTERS);
     }
     *out = reply.errors;
     return CLI_OK;
