@@ -431,11 +431,7 @@ static cli_status_t restore_write(cli_session_t *s, restore_t *r)
         cli_status_t status = cli_write_read_back(s, r->id, e->path, &e->parsed, kept,
                                                   sizeof kept, &refused);
         if (status == CLI_OK) {
-            r->written++;
-            if (!dump_same_number(kept, e->value)) {
-                print_difference(s, r, e, kept);
-                r->differences++;
-            }
+            r->written++; /* what it kept is compared once all are written */
             continue;
         }
         if (status == CLI_PORT_ERROR) {
@@ -464,6 +460,30 @@ static cli_status_t restore_write(cli_session_t *s, restore_t *r)
         }
         return cli_fail(status, "%s:%u: `%s` went unanswered; drive %u's previous values are "
                         "back", r->name, e->line, line, r->id);
+    }
+    return CLI_OK;
+}
+
+/* What the drive kept of each line once all are written: a later line can
+ * change an earlier one (two views of one value, a gear ratio). */
+static cli_status_t restore_compare(cli_session_t *s, restore_t *r)
+{
+    for (size_t i = 0; i < r->file.count; i++) {
+        const dump_entry_t *e = &r->file.entries[i];
+        char kept[DUMP_VALUE_MAX];
+        daran_result_t refused;
+        cli_status_t status = read_value(s, r->id, e->path, kept, sizeof kept, &refused);
+        if (status == CLI_DRIVE_ERROR) {
+            return cli_fail(status, "%s:%u: drive %u wrote %s but cannot read it back: %s",
+                            r->name, e->line, r->id, e->path, daran_result_phrase(refused));
+        }
+        if (status != CLI_OK) {
+            return status;
+        }
+        if (!dump_same_number(kept, e->value)) {
+            print_difference(s, r, e, kept);
+            r->differences++;
+        }
     }
     return CLI_OK;
 }
@@ -581,6 +601,9 @@ static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
         fputs(",\"differences\":[", stdout);
     }
     status = restore_write(s, &r);
+    if (status == CLI_OK) {
+        status = restore_compare(s, &r);
+    }
     bool saved_to_nvm = false;
     if (status == CLI_OK && save) {
         status = restore_save(s, r.id);
@@ -599,8 +622,12 @@ static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
         }
         puts("}");
     } else if (r.written == r.file.count) {
-        printf("drive %u: %zu properties restored from %s, %zu kept otherwise%s\n", r.id,
-               r.written, r.name, r.differences, saved_to_nvm ? "; saved (ss)" : "");
+        printf("drive %u: %zu properties restored from %s, %s", r.id, r.written, r.name,
+               r.differences == 0 ? "each kept as written" : "");
+        if (r.differences > 0) {
+            printf("%zu kept otherwise (above)", r.differences);
+        }
+        printf("%s\n", saved_to_nvm ? "; saved (ss)" : "");
     }
     fflush(stdout);
     sigprocmask(SIG_SETMASK, &saved, NULL);

@@ -203,6 +203,23 @@ class DumpRestore(unittest.TestCase):
         self.run_ok("restore", 3, self.file("firmware.txt"))
         self.assertEqual(self.run_ok("get", 3, "output_shaft.torque_lim").stdout, old)
 
+    def test_every_difference_is_reported(self):
+        # two views of one value (turn/s and r/min): the later line wins, and
+        # the restore says what the drive kept of the earlier one
+        original, _ = self.dump(3, "views-before.txt")
+        path = self.file("views.txt", "# firmware %s, hardware 3, serial number 1\n"
+                         "w axis3.output_shaft.trap_traj_vel_limit 300\n"
+                         "w axis3.trap_traj.config.vel_limit 10\n"
+                         % self.run_ok("send", "i 3").stdout.split()[0])
+        r = self.run_ok("restore", 3, path)
+        self.assertEqual(r.stdout.splitlines()[0], "%s:2: axis3.output_shaft.trap_traj_vel_limit: "
+                         "drive 3 keeps 600 (the file has 300)" % path)
+        self.assertIn("1 kept otherwise", r.stdout)
+        doc = json.loads(self.run_ok("--json", "restore", 3, path).stdout)
+        self.assertEqual(doc["differences"], [{"line": 2, "file": 300, "kept": 600,
+                                               "path": "axis3.output_shaft.trap_traj_vel_limit"}])
+        self.run_ok("restore", 3, original)
+
     def test_file_errors_before_the_port_is_opened(self):
         header = "# firmware 100, hardware 3, serial number 1\n"
         cases = [
