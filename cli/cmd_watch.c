@@ -304,8 +304,16 @@ static cli_status_t run_stream(cli_session_t *s, const watch_args_t *a, watch_ou
         s->on_report = take_report;
         s->report_ctx = &st;
         uint32_t start = cli_now_ms();
-        uint32_t stall_ms = 4u * a->period_ms > WATCH_STALL_MS ? 4u * a->period_ms
-                                                               : WATCH_STALL_MS;
+        /* A drive that was streaming may first finish its old period. */
+        uint32_t old_ms = 0;
+        (void)cli_parse_seconds(period.value, &old_ms);
+        uint32_t stall_ms = WATCH_STALL_MS;
+        if (stall_ms < 4u * a->period_ms) {
+            stall_ms = 4u * a->period_ms;
+        }
+        if (stall_ms < old_ms + a->period_ms) {
+            stall_ms = old_ms + a->period_ms;
+        }
         st.last_report_ms = start;
         while (!cli_interrupted() && !s->port_failed && out->failed == CLI_OK) {
             uint32_t now = cli_now_ms();
