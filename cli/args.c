@@ -79,3 +79,25 @@ size_t cli_split_fields(const char *text, size_t len, cli_field_t *out, size_t m
         count++;
     }
 }
+
+void cli_take_line(void *ctx, const daran_client_line_t *line)
+{
+    cli_text_line_t *t = ctx;
+    size_t len = line->len < sizeof t->text ? line->len : sizeof t->text;
+    memcpy(t->text, line->payload, len);
+    t->len = len;
+}
+
+bool cli_same_number(const char *a, const char *b)
+{
+    daran_client_number_t x;
+    daran_client_number_t y;
+    if (daran_client_parse_number(a, strlen(a), &x) != DARAN_OK ||
+        daran_client_parse_number(b, strlen(b), &y) != DARAN_OK) {
+        return strcmp(a, b) == 0;
+    }
+    if (x.is_integer && y.is_integer) {
+        return x.magnitude == y.magnitude && (x.negative == y.negative || x.magnitude == 0);
+    }
+    return x.f32 == y.f32 || (x.f32 != x.f32 && y.f32 != y.f32);
+}

@@ -122,6 +122,12 @@ uint32_t cli_now_ms(void);
 cli_status_t cli_write_read_back(cli_session_t *s, uint8_t id, const char *path,
                                  const daran_client_value_t *value, char *kept, size_t kept_size,
                                  daran_result_t *refused);
+/** cli_write_read_back() with the scope given (a drive's own system-scope
+ * row, which the tool's table does not know, needs SYSTEM). */
+cli_status_t cli_write_read_back_scoped(cli_session_t *s, uint8_t id, const char *path,
+                                        daran_client_scope_t scope,
+                                        const daran_client_value_t *value, char *kept,
+                                        size_t kept_size, daran_result_t *refused);
 
 /* ------------------------------------------------------------ args.c */
 
@@ -137,6 +143,16 @@ typedef struct cli_field {
 } cli_field_t;
 /** Split text[0..len) at blanks: how many fields (the first max in out). */
 size_t cli_split_fields(const char *text, size_t len, cli_field_t *out, size_t max);
+/** One reply line's text: the ctx of cli_take_line. */
+typedef struct cli_text_line {
+    char text[DARAN_CLIENT_LINE_MAX];
+    size_t len;
+} cli_text_line_t;
+/** A daran_client_line_fn that copies the line into a cli_text_line_t. */
+void cli_take_line(void *ctx, const daran_client_line_t *line);
+/** Whether two numbers as the drive prints them are the same value (1e3
+ * and 1000, -0 and 0; nan is nan). */
+bool cli_same_number(const char *a, const char *b);
 /** Parse seconds ("0.5") into milliseconds, 0..3,600,000. */
 bool cli_parse_seconds(const char *text, uint32_t *ms);
 

@@ -14,21 +14,9 @@
 
 /* ------------------------------------------------------------ shared */
 
-typedef struct text_line {
-    char text[DARAN_CLIENT_LINE_MAX];
-    size_t len;
-} text_line_t;
-
-static void take_line(void *ctx, const daran_client_line_t *line)
-{
-    text_line_t *t = ctx;
-    memcpy(t->text, line->payload, line->len);
-    t->len = line->len;
-}
-
 /* The drive's `i` line: firmware, hardware, serial number. */
 typedef struct drive_version {
-    text_line_t line;
+    cli_text_line_t line;
     cli_field_t field[3];
 } drive_version_t;
 
@@ -36,7 +24,7 @@ static cli_status_t read_version(cli_session_t *s, uint8_t id, drive_version_t *
 {
     daran_client_request_t request = {.command = DARAN_CLIENT_CMD_I, .id = id};
     v->line.len = 0;
-    cli_status_t status = cli_transact(s, &request, take_line, &v->line, false, NULL);
+    cli_status_t status = cli_transact(s, &request, cli_take_line, &v->line, false, NULL);
     if (status == CLI_OK && cli_split_fields(v->line.text, v->line.len, v->field, 3) != 3) {
         status = cli_fail(CLI_NO_REPLY, "drive %u: `i %u` answered \"%.*s\", not firmware, "
                           "hardware and serial number", id, id, (int)v->line.len, v->line.text);
@@ -55,11 +43,11 @@ static cli_status_t read_value(cli_session_t *s, uint8_t id, const char *path, c
         .id = id,
         .path = path,
         .scope = axis ? DARAN_CLIENT_SCOPE_AXIS : DARAN_CLIENT_SCOPE_SYSTEM};
-    text_line_t value = {.len = 0};
+    cli_text_line_t value = {.len = 0};
     daran_result_t result;
     *refused = DARAN_OK;
     out[0] = '\0';
-    cli_status_t status = cli_transact(s, &request, take_line, &value, true, &result);
+    cli_status_t status = cli_transact(s, &request, cli_take_line, &value, true, &result);
     if (status == CLI_DRIVE_ERROR) {
         *refused = result;
         return status;
@@ -388,7 +376,8 @@ static cli_status_t restore_roll_back(cli_session_t *s, restore_t *r, size_t cou
             return cli_fail(CLI_DRIVE_ERROR, "%s:%u: %s had %s, which cannot be written back",
                             r->name, e->line, e->path, r->before[i]);
         }
-        cli_status_t status = cli_write_read_back(s, r->id, e->path, &value, kept, sizeof kept,
+        cli_status_t status = cli_write_read_back_scoped(s, r->id, e->path,
+            e->axis ? DARAN_CLIENT_SCOPE_AXIS : DARAN_CLIENT_SCOPE_SYSTEM, &value, kept, sizeof kept,
                                                   &refused);
         if (status == CLI_DRIVE_ERROR) {
             return cli_fail(status, "%s:%u: writing back %s %s: drive %u refused it: %s", r->name,
@@ -397,7 +386,7 @@ static cli_status_t restore_roll_back(cli_session_t *s, restore_t *r, size_t cou
         if (status != CLI_OK) {
             return status;
         }
-        if (!dump_same_number(kept, r->before[i])) {
+        if (!cli_same_number(kept, r->before[i])) {
             return cli_fail(CLI_DRIVE_ERROR, "%s:%u: writing back %s %s: drive %u keeps %s",
                             r->name, e->line, e->path, r->before[i], r->id, kept);
         }
@@ -428,7 +417,8 @@ static cli_status_t restore_write(cli_session_t *s, restore_t *r)
         const dump_entry_t *e = &r->file.entries[i];
         char kept[DARAN_CLIENT_LINE_MAX];
         daran_result_t refused;
-        cli_status_t status = cli_write_read_back(s, r->id, e->path, &e->parsed, kept,
+        cli_status_t status = cli_write_read_back_scoped(s, r->id, e->path,
+            e->axis ? DARAN_CLIENT_SCOPE_AXIS : DARAN_CLIENT_SCOPE_SYSTEM, &e->parsed, kept,
                                                   sizeof kept, &refused);
         if (status == CLI_OK) {
             r->written++; /* what it kept is compared once all are written */
@@ -480,7 +470,7 @@ static cli_status_t restore_compare(cli_session_t *s, restore_t *r)
         if (status != CLI_OK) {
             return status;
         }
-        if (!dump_same_number(kept, e->value)) {
+        if (!cli_same_number(kept, e->value)) {
             print_difference(s, r, e, kept);
             r->differences++;
         }
@@ -499,7 +489,7 @@ static cli_status_t restore_check_firmware(cli_session_t *s, const restore_t *r,
     size_t len = version.field[0].len < sizeof firmware ? version.field[0].len : sizeof firmware - 1;
     memcpy(firmware, version.field[0].text, len);
     firmware[len] = '\0';
-    if (!dump_same_number(firmware, r->file.firmware)) {
+    if (!cli_same_number(firmware, r->file.firmware)) {
         return cli_fail(CLI_DRIVE_ERROR, "%s was dumped from firmware %s; drive %u runs firmware "
                         "%s (--force restores it anyway)", r->name, r->file.firmware, r->id,
                         firmware);

@@ -138,18 +138,6 @@ const cli_command_t cli_cmd_scan = {
 
 /* ------------------------------------------------------------------ get */
 
-typedef struct text_line {
-    char text[DARAN_CLIENT_LINE_MAX];
-    size_t len;
-} text_line_t;
-
-static void take_text(void *ctx, const daran_client_line_t *line)
-{
-    text_line_t *t = ctx;
-    memcpy(t->text, line->payload, line->len);
-    t->len = line->len;
-}
-
 static void json_path_head(size_t index, const char *path)
 {
     printf("%s{\"path\":", index > 0 ? "," : "");
@@ -174,10 +162,10 @@ static cli_status_t run_get(cli_session_t *s, int argc, char **argv)
     }
     cli_status_t worst = CLI_OK;
     for (int i = 1; i < argc; i++) {
-        text_line_t value = {.len = 0};
+        cli_text_line_t value = {.len = 0};
         daran_client_request_t request = {.command = DARAN_CLIENT_CMD_R, .id = id, .path = argv[i]};
         daran_result_t result;
-        status = cli_transact(s, &request, take_text, &value, false, &result);
+        status = cli_transact(s, &request, cli_take_line, &value, false, &result);
         if (status != CLI_OK && status != CLI_DRIVE_ERROR) {
             worst = status; /* the drive or the port is gone: the rest would fail alike */
             break;
@@ -219,22 +207,6 @@ const cli_command_t cli_cmd_get = {
 };
 
 /* ------------------------------------------------------------------ set */
-
-/* Whether the drive kept what was asked (its shortest float may print the
- * same value differently: 1e3 and 1000). */
-static bool same_number(const char *asked, const char *kept)
-{
-    daran_client_number_t a;
-    daran_client_number_t k;
-    if (daran_client_parse_number(asked, strlen(asked), &a) != DARAN_OK ||
-        daran_client_parse_number(kept, strlen(kept), &k) != DARAN_OK) {
-        return false;
-    }
-    if (a.is_integer && k.is_integer) {
-        return a.magnitude == k.magnitude && (a.negative == k.negative || a.magnitude == 0);
-    }
-    return a.f32 == k.f32 || (a.f32 != a.f32 && k.f32 != k.f32);
-}
 
 static cli_status_t run_set(cli_session_t *s, int argc, char **argv)
 {
@@ -294,9 +266,9 @@ static cli_status_t run_set(cli_session_t *s, int argc, char **argv)
             }
             putchar('}');
         } else if (status == CLI_OK) {
-            printf("%s %s%s%s%s\n", argv[i], kept, same_number(argv[i + 1], kept) ? "" : " (asked ",
-                   same_number(argv[i + 1], kept) ? "" : argv[i + 1],
-                   same_number(argv[i + 1], kept) ? "" : ")");
+            printf("%s %s%s%s%s\n", argv[i], kept, cli_same_number(argv[i + 1], kept) ? "" : " (asked ",
+                   cli_same_number(argv[i + 1], kept) ? "" : argv[i + 1],
+                   cli_same_number(argv[i + 1], kept) ? "" : ")");
         }
     }
     if (s->options.json) {

@@ -72,21 +72,6 @@ const char *dump_not_restored_why(const char *path, const char *range)
     return NULL;
 }
 
-bool dump_same_number(const char *a, const char *b)
-{
-    daran_client_number_t x;
-    daran_client_number_t y;
-    if (daran_client_parse_number(a, strlen(a), &x) != DARAN_OK ||
-        daran_client_parse_number(b, strlen(b), &y) != DARAN_OK) {
-        return strcmp(a, b) == 0;
-    }
-    if (x.is_integer && y.is_integer) {
-        return x.magnitude == y.magnitude && (x.negative == y.negative || x.magnitude == 0);
-    }
-    /* as float32, the drive's own precision; nan only equals nan */
-    return x.f32 == y.f32 || (isnan(x.f32) && isnan(y.f32));
-}
-
 /* ------------------------------------------------------------ the file */
 
 static void copy_field(char *dst, size_t size, const cli_field_t *field)

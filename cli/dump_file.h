@@ -23,9 +23,6 @@ const char *dump_not_restored_why(const char *path, const char *range);
 /** `path` without its `axisN.` prefix (itself when it has none). */
 const char *dump_bare_path(const char *path);
 
-/** Whether two numbers as the drive prints them (or a file writes them)
- * are the same value: `1e3` and `1000`, `-0` and `0`. */
-bool dump_same_number(const char *a, const char *b);
 
 #define DUMP_VALUE_MAX 48u
 

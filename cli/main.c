@@ -176,7 +176,7 @@ int main(int argc, char **argv)
     }
     cli_session_t *session = malloc(sizeof *session);
     if (session == NULL) {
-        return cli_fail(CLI_PORT_ERROR, "out of memory");
+        return (int)cli_fail(CLI_PORT_ERROR, "out of memory");
     }
     cli_session_init(session, &options);
     status = command->run(session, argc - 2, argv + 2);

@@ -38,6 +38,15 @@ cli_status_t cli_write_read_back(cli_session_t *s, uint8_t id, const char *path,
                                  const daran_client_value_t *value, char *kept, size_t kept_size,
                                  daran_result_t *refused)
 {
+    return cli_write_read_back_scoped(s, id, path, DARAN_CLIENT_SCOPE_AUTO, value, kept,
+                                      kept_size, refused);
+}
+
+cli_status_t cli_write_read_back_scoped(cli_session_t *s, uint8_t id, const char *path,
+                                        daran_client_scope_t scope,
+                                        const daran_client_value_t *value, char *kept,
+                                        size_t kept_size, daran_result_t *refused)
+{
     readback_t rb = {.stray_error = DARAN_OK};
     daran_client_line_fn saved_stray = s->on_stray;
     void *saved_ctx = s->stray_ctx;
@@ -47,8 +56,9 @@ cli_status_t cli_write_read_back(cli_session_t *s, uint8_t id, const char *path,
     kept[0] = '\0';
 
     daran_client_request_t write = {
-        .command = DARAN_CLIENT_CMD_W, .id = id, .path = path, .value = *value};
-    daran_client_request_t read = {.command = DARAN_CLIENT_CMD_R, .id = id, .path = path};
+        .command = DARAN_CLIENT_CMD_W, .id = id, .path = path, .value = *value, .scope = scope};
+    daran_client_request_t read = {
+        .command = DARAN_CLIENT_CMD_R, .id = id, .path = path, .scope = scope};
     daran_client_outcome_t outcome;
     daran_result_t result =
         daran_client_transact(&s->link, &write, 0, NULL, NULL, &outcome);
