@@ -315,7 +315,7 @@ static cli_status_t run_stream(cli_session_t *s, const watch_args_t *a, watch_ou
             stall_ms = old_ms + a->period_ms;
         }
         st.last_report_ms = start;
-        while (!cli_interrupted() && !s->port_failed && out->failed == CLI_OK) {
+        while (!cli_interrupted() && !s->port_failed && watch_output_going(out)) {
             uint32_t now = cli_now_ms();
             if (a->duration_ms != 0 && now - start >= a->duration_ms) {
                 break;
@@ -401,7 +401,7 @@ static cli_status_t run_poll(cli_session_t *s, const watch_args_t *a, watch_outp
     watch_output_banner(out, banner);
     uint32_t start = cli_now_ms();
     uint32_t next = start;
-    while (!cli_interrupted() && out->failed == CLI_OK) {
+    while (!cli_interrupted() && watch_output_going(out)) {
         uint32_t now = cli_now_ms();
         if (a->duration_ms != 0 && now - start >= a->duration_ms) {
             break;
@@ -479,6 +479,7 @@ static cli_status_t run_watch(cli_session_t *s, int argc, char **argv)
         return status;
     }
     cli_catch_signals();
+    void (*saved_pipe)(int) = signal(SIGPIPE, SIG_IGN); /* see watch_output_going() */
     watch_output_t out = {.field_count = a.field_count, .json = s->options.json,
                           .csv_path = a.csv, .plot_path = a.plot};
     memcpy(out.fields, a.fields, sizeof out.fields);
@@ -491,6 +492,9 @@ static cli_status_t run_watch(cli_session_t *s, int argc, char **argv)
     s->on_report = saved_report;
     s->report_ctx = saved_report_ctx;
     cli_status_t finished = watch_output_finish(&out, status == CLI_OK);
+    if (!out.reader_gone) {
+        signal(SIGPIPE, saved_pipe); /* else main's last flush would die of it */
+    }
     if (status == CLI_OK && out.terminal) {
         printf("%lu samples%s%s%s%s\n", out.samples, a.csv != NULL ? "; CSV in " : "",
                a.csv != NULL ? a.csv : "", finished == CLI_OK && a.plot != NULL ? "; plot in " : "",

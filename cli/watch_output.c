@@ -44,9 +44,25 @@ void watch_output_init(watch_output_t *out)
     out->plot_data = NULL;
     out->plot_data_path[0] = '\0';
     out->failed = CLI_OK;
+    out->reader_gone = false;
     out->draw_pending = false;
     out->line_open = false;
     out->samples = 0;
+}
+
+bool watch_output_going(const watch_output_t *out)
+{
+    return out->failed == CLI_OK && !out->reader_gone;
+}
+
+/* Each sample is flushed: a script reading the pipe sees it as it comes.
+ * A reader that went away (SIGPIPE is ignored meanwhile) ends the run as
+ * Ctrl-C would, so the drive's settings still go back. */
+static void flush_stdout(watch_output_t *out)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        out->reader_gone = true;
+    }
 }
 
 void watch_output_banner(watch_output_t *out, const char *what)
@@ -106,7 +122,7 @@ static void draw_status_line(watch_output_t *out)
         printf("   %s %s%s%s", f->name, sample->values[i], f->unit[0] != '\0' ? " " : "", f->unit);
     }
     fputs("\033[K", stdout); /* erase what a longer line left */
-    fflush(stdout);
+    flush_stdout(out);
     out->line_open = true;
     out->draw_pending = false;
     out->last_draw_ms = cli_now_ms();
@@ -129,7 +145,7 @@ static void print_sample(watch_output_t *out, const watch_sample_t *sample)
         }
         putchar('\n');
     }
-    fflush(stdout); /* a script reading the pipe sees each sample as it comes */
+    flush_stdout(out);
 }
 
 static void record(FILE *file, char separator, const watch_sample_t *sample, size_t count)
@@ -143,7 +159,7 @@ static void record(FILE *file, char separator, const watch_sample_t *sample, siz
 
 void watch_output_sample(watch_output_t *out, const watch_sample_t *sample)
 {
-    if (out->failed != CLI_OK || (!out->opened && open_files(out) != CLI_OK)) {
+    if (!watch_output_going(out) || (!out->opened && open_files(out) != CLI_OK)) {
         return;
     }
     out->samples++;

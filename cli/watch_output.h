@@ -43,6 +43,7 @@ typedef struct watch_output {
     FILE *plot_data;
     char plot_data_path[256];
     cli_status_t failed; /**< a file could not be written (reported) */
+    bool reader_gone;    /**< stdout cannot be written (`| head` ended): the run is over */
     uint32_t last_draw_ms;
     bool draw_pending;  /**< the newest sample is not on the terminal yet */
     bool line_open;     /**< the status line is on the terminal, not ended */
@@ -60,6 +61,8 @@ void watch_output_banner(watch_output_t *out, const char *what);
 /** Show and record one sample. A file that cannot be written sets
  * out->failed (reported); the caller ends the run. */
 void watch_output_sample(watch_output_t *out, const watch_sample_t *sample);
+/** Whether the run may go on: no file failed, and stdout still has a reader. */
+bool watch_output_going(const watch_output_t *out);
 /** End the run: the last sample drawn, the files closed (the CSV written
  * with its header even when no sample came, if `ok`), and with `ok` the
  * PNG drawn. Returns CLI_OK or the failure it reported. */

@@ -139,6 +139,22 @@ class Watch(unittest.TestCase):
                 self.assertGreaterEqual(len((first + out).splitlines()), 3)
                 self.assertEqual(self.telemetry_settings(), ["0", "3"])
 
+    def test_a_reader_that_goes_away_ends_the_watch(self):
+        # `daran watch 1 | head -2`: the pipe breaks, the stream still stops
+        env = dict(os.environ)
+        env.pop("DARAN_PORT", None)
+        p = subprocess.Popen([DARAN, "--port", self.sim.path, "watch", "1", "--period", "0.01"],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+        p.stdout.readline()
+        p.stdout.readline()
+        p.stdout.close()
+        err = p.stderr.read().decode()
+        p.stderr.close()
+        p.wait(timeout=10)
+        self.assertEqual(p.returncode, 0, err)
+        self.assertEqual(err, "")
+        self.assertEqual(self.telemetry_settings(), ["0", "3"])
+
     def test_poll_gives_rows(self):
         out = self.file("poll.csv")
         r = daran(self.sim.path, "watch", "1", "vbus", "pos", "--poll", "--period", "0.04",
