@@ -64,32 +64,22 @@ static cli_status_t read_errors(cli_session_t *s, uint8_t id, daran_client_error
     return CLI_OK;
 }
 
-typedef struct text_value {
-    char text[DARAN_CLIENT_LINE_MAX];
-    size_t len;
-} text_value_t;
-
-static void take_value(void *ctx, const daran_client_line_t *line)
-{
-    text_value_t *v = ctx;
-    memcpy(v->text, line->payload, line->len);
-    v->len = line->len;
-}
-
-/* `r path` of drive id as a u32; a failure is reported here. */
+/* `r path` of drive id as a u32; a failure is reported here. The value is
+ * the link's last reply line (link.last): no copy of our own. */
 static cli_status_t read_u32(cli_session_t *s, uint8_t id, const char *path, uint32_t *out)
 {
-    text_value_t value = {.len = 0};
     daran_client_request_t request = {.command = DARAN_CLIENT_CMD_R, .id = id, .path = path};
-    cli_status_t status = cli_transact(s, &request, take_value, &value, false, NULL);
+    cli_status_t status = cli_transact(s, &request, NULL, NULL, false, NULL);
     if (status != CLI_OK) {
         return status;
     }
+    const char *text = s->link.last;
+    size_t len = s->link.last_len;
     daran_client_number_t number;
-    if (daran_client_parse_number(value.text, value.len, &number) != DARAN_OK ||
+    if (daran_client_parse_number(text, len, &number) != DARAN_OK ||
         daran_client_number_u32(&number, out) != DARAN_OK) {
         return cli_fail(CLI_NO_REPLY, "drive %u's %s on %s is not an unsigned integer: \"%.*s\"",
-                        id, path, s->port_path, (int)value.len, value.text);
+                        id, path, s->port_path, (int)len, text);
     }
     return CLI_OK;
 }
