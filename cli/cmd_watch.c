@@ -203,13 +203,14 @@ static void take_report(void *ctx, const daran_client_report_t *report)
 
 typedef struct saved_setting {
     const char *path;
-    char value[WATCH_TEXT_MAX];
+    char value[DARAN_CLIENT_LINE_MAX];
 } saved_setting_t;
 
+/* A reply line into a char[DARAN_CLIENT_LINE_MAX], as a string. */
 static void take_text(void *ctx, const daran_client_line_t *line)
 {
     char *text = ctx;
-    size_t len = line->len < WATCH_TEXT_MAX - 1 ? line->len : WATCH_TEXT_MAX - 1;
+    size_t len = line->len < DARAN_CLIENT_LINE_MAX - 1 ? line->len : DARAN_CLIENT_LINE_MAX - 1;
     memcpy(text, line->payload, len);
     text[len] = '\0';
 }
@@ -259,7 +260,7 @@ static cli_status_t run_stream(cli_session_t *s, const watch_args_t *a, watch_ou
 {
     saved_setting_t period = {.path = "telemetry.period"};
     saved_setting_t fields = {.path = "telemetry.fields"};
-    memcpy(period.value, old_period, WATCH_TEXT_MAX);
+    memcpy(period.value, old_period, sizeof period.value);
     cli_status_t status = read_setting(s, a->id, &fields);
     if (status != CLI_OK) {
         return status;
@@ -348,34 +349,22 @@ static cli_status_t run_stream(cli_session_t *s, const watch_args_t *a, watch_ou
 
 /* ------------------------------------------------------------ polling */
 
-typedef struct poll_reply {
-    char text[DARAN_CLIENT_LINE_MAX];
-    size_t len;
-} poll_reply_t;
-
-static void take_poll_reply(void *ctx, const daran_client_line_t *line)
-{
-    poll_reply_t *r = ctx;
-    memcpy(r->text, line->payload, line->len);
-    r->len = line->len;
-}
-
 /* Ask `f` or `g` and put its two values where the shown fields want them. */
 static cli_status_t poll_once(cli_session_t *s, const watch_args_t *a, char command,
                               watch_sample_t *sample)
 {
     daran_client_request_t request = {
         .command = command == 'f' ? DARAN_CLIENT_CMD_F : DARAN_CLIENT_CMD_G, .id = a->id};
-    poll_reply_t reply = {.len = 0};
-    cli_status_t status = cli_transact(s, &request, take_poll_reply, &reply, false, NULL);
+    char reply[DARAN_CLIENT_LINE_MAX] = "";
+    cli_status_t status = cli_transact(s, &request, take_text, reply, false, NULL);
     if (status != CLI_OK) {
         return status;
     }
     cli_field_t values[2];
-    if (cli_split_fields(reply.text, reply.len, values, 2) != 2 || values[0].len >= WATCH_TEXT_MAX ||
+    if (cli_split_fields(reply, strlen(reply), values, 2) != 2 || values[0].len >= WATCH_TEXT_MAX ||
         values[1].len >= WATCH_TEXT_MAX) {
-        return cli_fail(CLI_NO_REPLY, "drive %u's reply to \"%c %u\" is not two values: \"%.*s\"",
-                        a->id, command, a->id, (int)reply.len, reply.text);
+        return cli_fail(CLI_NO_REPLY, "drive %u's reply to \"%c %u\" is not two values: \"%s\"",
+                        a->id, command, a->id, reply);
     }
     for (size_t i = 0; i < a->field_count; i++) {
         if (a->fields[i]->poll_command == command) {

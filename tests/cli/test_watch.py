@@ -168,6 +168,17 @@ class Watch(unittest.TestCase):
         self.assertTrue(all(row[1] == 24 for row in rows), rows)
         self.assertEqual(self.telemetry_settings(), ["0", "3"])
 
+    def test_checksums(self):
+        for mode in ([], ["--poll"]):
+            with self.subTest(mode=mode):
+                r = daran(self.sim.path, "--checksum", "watch", "1", "pos", "vbus", *mode,
+                          "--duration", "0.2")
+                self.assertEqual(r.returncode, 0, r.stderr)
+                lines = r.stdout.splitlines()
+                self.assertGreaterEqual(len(lines), 2)
+                self.assertTrue(all(line.split()[2] == "24" for line in lines), lines)
+        self.assertEqual(self.telemetry_settings(), ["0", "3"])
+
     def test_json_lines(self):
         r = daran(self.sim.path, "--json", "watch", "1", "trajectory_done", "error",
                   "--duration", "0.2")
