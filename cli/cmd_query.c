@@ -138,6 +138,22 @@ const cli_command_t cli_cmd_scan = {
 
 /* ------------------------------------------------------------------ get */
 
+/* A path's `axisN.` names a drive too: N must be the command's id (or 0,
+ * as discovery writes it), else another drive's value would be shown under
+ * this one's name. */
+static bool path_names_other_drive(const char *path, uint8_t id)
+{
+    if (strncmp(path, "axis", 4) != 0) {
+        return false;
+    }
+    unsigned n = 0;
+    const char *p = path + 4;
+    while (*p >= '0' && *p <= '9' && n < 100u) {
+        n = n * 10u + (unsigned)(*p++ - '0');
+    }
+    return p != path + 4 && *p == '.' && n != 0u && n != id;
+}
+
 static void json_path_head(size_t index, const char *path)
 {
     printf("%s{\"path\":", index > 0 ? "," : "");
@@ -152,6 +168,11 @@ static cli_status_t run_get(cli_session_t *s, int argc, char **argv)
     }
     if (!cli_parse_id(argv[0], false, &id)) {
         return cli_usage(&cli_cmd_get, "\"%s\" is not a motor id (1..63)", argv[0]);
+    }
+    for (int i = 1; i < argc; i++) {
+        if (path_names_other_drive(argv[i], id)) {
+            return cli_usage(&cli_cmd_get, "%s is not a path of drive %u", argv[i], id);
+        }
     }
     cli_status_t status = cli_session_connect(s);
     if (status != CLI_OK) {
@@ -222,6 +243,9 @@ static cli_status_t run_set(cli_session_t *s, int argc, char **argv)
         return cli_usage(&cli_cmd_set, "at most 32 properties at a time");
     }
     for (int i = 1; i < argc; i += 2) {
+        if (path_names_other_drive(argv[i], id)) {
+            return cli_usage(&cli_cmd_set, "%s is not a path of drive %u", argv[i], id);
+        }
         if (!cli_parse_value(argv[i + 1], &values[i / 2])) {
             return cli_usage(&cli_cmd_set, "\"%s\" is not a number (for %s)", argv[i + 1],
                              argv[i]);

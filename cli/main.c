@@ -67,9 +67,13 @@ static void print_usage(FILE *out)
 {
     fputs(usage_head, out);
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
-        char head[64];
+        char head[256];
         (void)snprintf(head, sizeof head, "%s %s", commands[i]->name, commands[i]->synopsis);
-        fprintf(out, "  %-40s %s\n", head, commands[i]->summary);
+        if (strlen(head) > 40) { /* a long synopsis whole on its line, the summary below */
+            fprintf(out, "  %s\n  %-40s %s\n", head, "", commands[i]->summary);
+        } else {
+            fprintf(out, "  %-40s %s\n", head, commands[i]->summary);
+        }
     }
     fputs(usage_tail, out);
 }

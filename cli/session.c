@@ -192,11 +192,13 @@ cli_status_t cli_port_status(cli_session_t *s)
 cli_status_t cli_transact_failed(cli_session_t *s, const daran_client_request_t *request,
                                  cli_status_t status, daran_result_t result)
 {
-    if (s->port_failed) {
-        return cli_port_status(s);
-    }
     char text[DARAN_CLIENT_LINE_MAX];
     (void)cli_request_text(request, text, sizeof text);
+    if (s->port_failed) {
+        return cli_fail(CLI_PORT_ERROR, "%s: %s failed: %s (during \"%s\" to drive %u)",
+                        s->port_path, s->port_what != NULL ? s->port_what : "i/o",
+                        strerror(s->port_errno), text, request->id);
+    }
     switch (status) {
     case CLI_OK:
         return CLI_OK;

@@ -301,7 +301,6 @@ class ThreeDrivesTest(unittest.TestCase):
             self.assertEqual(r.returncode, 0, command)
             self.assertIn("daran [OPTIONS] %s" % command, r.stdout)
 
-    @unittest.expectedFailure  # main.c cuts a synopsis at 63 characters (watch's): see the report
     def test_help_shows_each_synopsis_whole(self):
         listing = "\n".join(self.help_commands())
         for command in COMMANDS:
