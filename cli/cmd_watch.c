@@ -255,6 +255,66 @@ static cli_status_t restore_stream(cli_session_t *s, uint8_t id, const saved_set
     return first != CLI_OK ? first : second;
 }
 
+static size_t bits_set(uint32_t bits)
+{
+    size_t count = 0;
+    for (; bits != 0; bits &= bits - 1u) {
+        count++;
+    }
+    return count;
+}
+
+/* The telemetry.fields bitmask of the shown fields; a report carries them
+ * in bit order, so each one's place is the count of the bits below its own. */
+static uint32_t plan_reports(const watch_args_t *a, stream_t *st)
+{
+    uint32_t mask = 0;
+    for (size_t i = 0; i < a->field_count; i++) {
+        mask |= 1u << a->fields[i]->bit;
+    }
+    for (size_t i = 0; i < a->field_count; i++) {
+        st->slot[i] = bits_set(mask & ((1u << a->fields[i]->bit) - 1u));
+    }
+    st->report_fields = bits_set(mask);
+    return mask;
+}
+
+/* Show the reports until the run ends. */
+static cli_status_t follow_stream(cli_session_t *s, const watch_args_t *a, watch_output_t *out,
+                                  stream_t *st, uint32_t stall_ms)
+{
+    s->on_report = take_report;
+    s->report_ctx = st;
+    uint32_t start = cli_now_ms();
+    st->last_report_ms = start;
+    bool stalled = false;
+    while (!cli_interrupted() && !s->port_failed && watch_output_going(out)) {
+        uint32_t now = cli_now_ms();
+        if (a->duration_ms != 0 && now - start >= a->duration_ms) {
+            break;
+        }
+        if (now - st->last_report_ms >= stall_ms) {
+            stalled = true;
+            break;
+        }
+        uint32_t slice = WATCH_SLICE_MS;
+        if (a->duration_ms != 0 && a->duration_ms - (now - start) < slice) {
+            slice = a->duration_ms - (now - start);
+        }
+        cli_session_pump(s, slice);
+    }
+    s->on_report = NULL;
+    watch_output_end_line(out); /* a message below starts on a line of its own */
+    if (s->port_failed) {
+        return cli_port_status(s); /* nothing can be written back */
+    }
+    if (stalled) {
+        return cli_fail(CLI_NO_REPLY, "drive %u sent no telemetry report for %u ms on %s", a->id,
+                        (unsigned)stall_ms, s->port_path);
+    }
+    return out->failed;
+}
+
 static cli_status_t run_stream(cli_session_t *s, const watch_args_t *a, watch_output_t *out,
                                const char *old_period)
 {
@@ -267,19 +327,7 @@ static cli_status_t run_stream(cli_session_t *s, const watch_args_t *a, watch_ou
     }
 
     stream_t st = {.out = out, .id = a->id};
-    uint32_t mask = 0;
-    for (size_t i = 0; i < a->field_count; i++) {
-        mask |= 1u << a->fields[i]->bit;
-    }
-    for (size_t i = 0; i < a->field_count; i++) {
-        uint32_t below = mask & ((1u << a->fields[i]->bit) - 1u);
-        for (st.slot[i] = 0; below != 0; below &= below - 1u) {
-            st.slot[i]++;
-        }
-    }
-    for (uint32_t m = mask; m != 0; m &= m - 1u) {
-        st.report_fields++;
-    }
+    uint32_t mask = plan_reports(a, &st);
 
     /* From the first write on, whatever happens, the old settings go back. */
     char mask_text[WATCH_TEXT_MAX];
@@ -302,9 +350,6 @@ static cli_status_t run_stream(cli_session_t *s, const watch_args_t *a, watch_ou
         (void)snprintf(banner, sizeof banner, "drive %u: telemetry every %s s", a->id,
                        period_kept);
         watch_output_banner(out, banner);
-        s->on_report = take_report;
-        s->report_ctx = &st;
-        uint32_t start = cli_now_ms();
         /* A drive that was streaming may first finish its old period. */
         uint32_t old_ms = 0;
         (void)cli_parse_seconds(period.value, &old_ms);
@@ -315,30 +360,7 @@ static cli_status_t run_stream(cli_session_t *s, const watch_args_t *a, watch_ou
         if (stall_ms < old_ms + a->period_ms) {
             stall_ms = old_ms + a->period_ms;
         }
-        st.last_report_ms = start;
-        while (!cli_interrupted() && !s->port_failed && watch_output_going(out)) {
-            uint32_t now = cli_now_ms();
-            if (a->duration_ms != 0 && now - start >= a->duration_ms) {
-                break;
-            }
-            if (now - st.last_report_ms >= stall_ms) {
-                status = cli_fail(CLI_NO_REPLY, "drive %u sent no telemetry report for %u ms on %s",
-                                  a->id, (unsigned)stall_ms, s->port_path);
-                break;
-            }
-            uint32_t slice = WATCH_SLICE_MS;
-            if (a->duration_ms != 0 && a->duration_ms - (now - start) < slice) {
-                slice = a->duration_ms - (now - start);
-            }
-            cli_session_pump(s, slice);
-        }
-        s->on_report = NULL;
-        if (s->port_failed) {
-            return cli_port_status(s); /* nothing can be written back */
-        }
-        if (status == CLI_OK) {
-            status = out->failed;
-        }
+        status = follow_stream(s, a, out, &st, stall_ms);
     }
     if (status == CLI_PORT_ERROR) {
         return status;
@@ -350,19 +372,22 @@ static cli_status_t run_stream(cli_session_t *s, const watch_args_t *a, watch_ou
 /* ------------------------------------------------------------ polling */
 
 /* Ask `f` or `g` and put its two values where the shown fields want them. */
-static cli_status_t poll_once(cli_session_t *s, const watch_args_t *a, char command,
-                              watch_sample_t *sample)
+static cli_status_t poll_once(cli_session_t *s, const watch_args_t *a, watch_output_t *out,
+                              char command, watch_sample_t *sample)
 {
     daran_client_request_t request = {
         .command = command == 'f' ? DARAN_CLIENT_CMD_F : DARAN_CLIENT_CMD_G, .id = a->id};
     char reply[DARAN_CLIENT_LINE_MAX] = "";
-    cli_status_t status = cli_transact(s, &request, take_text, reply, false, NULL);
+    daran_result_t result;
+    cli_status_t status = cli_transact(s, &request, take_text, reply, true, &result);
     if (status != CLI_OK) {
-        return status;
+        watch_output_end_line(out); /* the message starts on a line of its own */
+        return cli_transact_failed(s, &request, status, result);
     }
     cli_field_t values[2];
     if (cli_split_fields(reply, strlen(reply), values, 2) != 2 || values[0].len >= WATCH_TEXT_MAX ||
         values[1].len >= WATCH_TEXT_MAX) {
+        watch_output_end_line(out);
         return cli_fail(CLI_NO_REPLY, "drive %u's reply to \"%c %u\" is not two values: \"%s\"",
                         a->id, command, a->id, reply);
     }
@@ -410,10 +435,10 @@ static cli_status_t run_poll(cli_session_t *s, const watch_args_t *a, watch_outp
                        (unsigned)(elapsed % 1000u));
         cli_status_t status = CLI_OK;
         if (need_f) {
-            status = poll_once(s, a, 'f', &sample);
+            status = poll_once(s, a, out, 'f', &sample);
         }
         if (status == CLI_OK && need_g) {
-            status = poll_once(s, a, 'g', &sample);
+            status = poll_once(s, a, out, 'g', &sample);
         }
         if (status != CLI_OK) {
             return status;

@@ -75,6 +75,7 @@ void watch_output_banner(watch_output_t *out, const char *what)
 
 static cli_status_t file_failed(watch_output_t *out, const char *path, int error)
 {
+    watch_output_end_line(out);
     out->failed = cli_fail(CLI_USAGE, "watch: cannot write %s: %s", path, strerror(error));
     return out->failed;
 }
@@ -311,7 +312,7 @@ static cli_status_t draw_plot(const watch_output_t *out)
     return status;
 }
 
-cli_status_t watch_output_finish(watch_output_t *out, bool ok)
+void watch_output_end_line(watch_output_t *out)
 {
     if (out->terminal && out->line_open) {
         if (out->draw_pending) {
@@ -321,6 +322,11 @@ cli_status_t watch_output_finish(watch_output_t *out, bool ok)
         fflush(stdout);
         out->line_open = false;
     }
+}
+
+cli_status_t watch_output_finish(watch_output_t *out, bool ok)
+{
+    watch_output_end_line(out);
     if (ok && !out->opened && out->failed == CLI_OK) {
         (void)open_files(out); /* a run without samples still leaves its CSV header */
     }

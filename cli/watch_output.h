@@ -63,6 +63,9 @@ void watch_output_banner(watch_output_t *out, const char *what);
 void watch_output_sample(watch_output_t *out, const watch_sample_t *sample);
 /** Whether the run may go on: no file failed, and stdout still has a reader. */
 bool watch_output_going(const watch_output_t *out);
+/** On a terminal, end the status line (its newest sample drawn), so that a
+ * message or the next line starts on a line of its own. */
+void watch_output_end_line(watch_output_t *out);
 /** End the run: the last sample drawn, the files closed (the CSV written
  * with its header even when no sample came, if `ok`), and with `ok` the
  * PNG drawn. Returns CLI_OK or the failure it reported. */

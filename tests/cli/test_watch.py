@@ -17,7 +17,7 @@ import time
 import tty
 import unittest
 
-from cli_support import DARAN, Sim, daran, main
+from cli_support import DARAN, Proxy, Sim, daran, main
 
 
 class HiddenTelemetry:
@@ -153,6 +153,25 @@ class Watch(unittest.TestCase):
         p.wait(timeout=10)
         self.assertEqual(p.returncode, 0, err)
         self.assertEqual(err, "")
+        self.assertEqual(self.telemetry_settings(), ["0", "3"])
+
+    def test_a_stream_that_stops(self):
+        # the drive goes silent mid-stream: exit 3 after 1 s without a report; the
+        # settings are still written (the drive hears them; their read-backs are lost)
+        with Proxy(self.sim.path) as link:
+            env = dict(os.environ)
+            env.pop("DARAN_PORT", None)
+            p = subprocess.Popen([DARAN, "--port", link.path, "--timeout", "0.05", "watch", "1"],
+                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                 env=env)
+            first = p.stdout.readline()
+            link.drop_replies()
+            out, err = p.communicate(timeout=10)
+        self.assertEqual(p.returncode, 3, err)
+        self.assertTrue(first)
+        messages = err.splitlines()
+        self.assertIn("drive 1 sent no telemetry report for 1000 ms", messages[0])
+        self.assertTrue(all("drive 1 did not answer" in m for m in messages[1:]), messages)
         self.assertEqual(self.telemetry_settings(), ["0", "3"])
 
     def test_poll_gives_rows(self):
