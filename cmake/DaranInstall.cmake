@@ -132,3 +132,8 @@ configure_file("${CMAKE_CURRENT_LIST_DIR}/daran_ascii.pc.in"
                "${PROJECT_BINARY_DIR}/daran_ascii.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/daran_ascii.pc"
         DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
+# daran_client's own .pc: it needs the core, which pkg-config pulls in.
+configure_file("${CMAKE_CURRENT_LIST_DIR}/daran_client.pc.in"
+               "${PROJECT_BINARY_DIR}/daran_client.pc" @ONLY)
+install(FILES "${PROJECT_BINARY_DIR}/daran_client.pc"
+        DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")

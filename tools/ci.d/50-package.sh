@@ -54,12 +54,15 @@ check_install_tree() {
   for f in include/daran_ascii.h include/daran_drive.h include/daran_hal.h \
            include/daran_config.h include/daran_properties.h include/daran_result.h \
            include/daran_can.h include/daran_client.h lib/libdaran_client.a \
-           lib/libdaran_ascii.a lib/pkgconfig/daran_ascii.pc \
+           lib/libdaran_ascii.a lib/pkgconfig/daran_ascii.pc lib/pkgconfig/daran_client.pc \
            lib/cmake/daran_ascii/daran_asciiConfig.cmake \
            lib/cmake/daran_ascii/daran_asciiConfigVersion.cmake \
            lib/cmake/daran_ascii/daran_asciiTargets.cmake; do
     [ -f "$prefix/$f" ] || { echo "missing from the install: $f"; return 1; }
   done
+  # the command-line tool, built and installed with the package, runs from the prefix
+  [ -x "$prefix/bin/daran" ] || { echo "missing from the install: bin/daran"; return 1; }
+  "$prefix/bin/daran" --help | grep -q "^  scan" || { echo "bin/daran --help lists no commands"; return 1; }
 }
 
 # consumer_cmake SOURCE BUILD [cmake args...]: configure, build and run tests/consumer/*.
@@ -79,6 +82,16 @@ consumer_pkg_config() {
   # shellcheck disable=SC2046  # the flags must split into words
   cc -std=c99 -Wall -Wextra -Werror -Itests/support -o "$out" tests/consumer/consumer.c tests/support/stub_hal.c \
     $(pkg-config --cflags --libs daran_ascii) &&
+    "$out"
+}
+
+# The client through its own .pc (which requires the core's).
+client_pkg_config() {
+  local prefix=$1 out=$2
+  export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+  # shellcheck disable=SC2046  # the flags must split into words
+  cc -std=c99 -Wall -Wextra -Werror -Itests/support -o "$out" tests/consumer/client_consumer.c \
+    tests/support/stub_hal.c $(pkg-config --cflags --libs daran_client) &&
     "$out"
 }
 
@@ -107,6 +120,8 @@ step "consumer: add_subdirectory of the source tree" \
   consumer_cmake tests/consumer/add_subdirectory "$work/consumer-subdir" -DDARAN_SOURCE_DIR="$repo"
 step "consumer: cc \$(pkg-config --cflags --libs daran_ascii)" \
   consumer_pkg_config "$prefix" "$work/consumer-pc"
+step "consumer: cc \$(pkg-config --cflags --libs daran_client)" \
+  client_pkg_config "$prefix" "$work/client-pc"
 
 # A program compiled with other size options than the library must be refused
 # by daran_init() (sizeof check), not run on a daran_drive_t of the wrong size.
