@@ -106,39 +106,36 @@ daran_client_reply_shape_t daran_client_line_shape(const char *payload, size_t l
     return DARAN_CLIENT_REPLY_SILENT;
 }
 
-/* The SYSTEM rows' paths as one NUL-separated block, from the core's list:
- * the scope token picks whether a row contributes its path. */
-#define SCOPE_PATH_SYSTEM(path) path "\0"
+/* The SYSTEM rows' paths and their lengths, from the core's list: the scope
+ * token picks whether a row contributes. The lengths are compared first, so
+ * a path is looked at only against rows of its own length. */
+typedef struct system_path {
+    const char *text;
+    uint8_t len;
+} system_path_t;
+#define SCOPE_PATH_SYSTEM(path) {path, (uint8_t)(sizeof path - 1u)},
 #define SCOPE_PATH_AXIS(path)
 #define SYSTEM_PATH_(id, path, scope, type, access, range, unit, can) SCOPE_PATH_##scope(path)
-static const char system_paths[] = DARAN_PROPERTY_LIST(SYSTEM_PATH_);
+static const system_path_t system_paths[] = {DARAN_PROPERTY_LIST(SYSTEM_PATH_)};
 #undef SYSTEM_PATH_
-
-static bool text_equals(const char *a, size_t a_len, const char *b, size_t b_len)
-{
-    if (a_len != b_len) {
-        return false;
-    }
-    for (size_t i = 0; i < a_len; i++) {
-        if (a[i] != b[i]) {
-            return false;
-        }
-    }
-    return true;
-}
 
 daran_client_scope_t daran_client_path_scope(const char *path, size_t len)
 {
     if (path == NULL) {
         return DARAN_CLIENT_SCOPE_AXIS;
     }
-    /* the block ends with an empty text before its final NUL */
-    for (const char *entry = system_paths; *entry != '\0';) {
-        size_t entry_len = daran_text_len(entry);
-        if (text_equals(entry, entry_len, path, len)) {
+    for (size_t row = 0; row < sizeof system_paths / sizeof system_paths[0]; row++) {
+        const system_path_t *entry = &system_paths[row];
+        if (entry->len != len) {
+            continue;
+        }
+        size_t i = 0;
+        while (i < len && entry->text[i] == path[i]) {
+            i++;
+        }
+        if (i == len) {
             return DARAN_CLIENT_SCOPE_SYSTEM;
         }
-        entry += entry_len + 1u;
     }
     return DARAN_CLIENT_SCOPE_AXIS;
 }
