@@ -224,6 +224,17 @@ static void write_plot_script(FILE *script, const watch_output_t *out)
     fputs("unset multiplot\nset output\n", script);
 }
 
+/* text into why[0..size), cut to fit (a message may lose its tail). */
+static void copy_cut(char *why, size_t size, const char *text)
+{
+    size_t len = strlen(text);
+    if (len >= size) {
+        len = size - 1;
+    }
+    memcpy(why, text, len);
+    why[len] = '\0';
+}
+
 /* gnuplot's complaint, from what it wrote on stderr, as one line: the text
  * after "line N:" (and the system error, when it gave one), else its last
  * line. */
@@ -245,12 +256,12 @@ static void gnuplot_complaint(FILE *errors, char *why, size_t size)
         if (strncmp(text, "line ", 5) == 0 && colon != NULL) {
             for (text = colon + 1; *text == ' '; text++) {
             }
-            (void)snprintf(why, size, "%s", text);
+            copy_cut(why, size, text);
         } else if (strncmp(text, "system error:", 13) == 0 && why[0] != '\0') {
             size_t used = strlen(why);
             (void)snprintf(why + used, size - used, " (%s)", text + 14);
         } else if (why[0] == '\0' || strncmp(why, "line", 4) != 0) {
-            (void)snprintf(why, size, "%s", text);
+            copy_cut(why, size, text);
         }
     }
 }
