@@ -108,7 +108,12 @@ DARAN_CAN_SHARED daran_result_t daran_commit_property(daran_drive_t *drive, dara
             return result;
         }
     }
-    return daran_set(drive, prop, value);
+    daran_result_t result = daran_set(drive, prop, value);
+    if (DARAN_ENABLE_TELEMETRY && result == DARAN_OK && prop == DARAN_PROP_TELEMETRY_PERIOD) {
+        /* a new period starts now, not after the report the old one still owes */
+        drive->telemetry_due = 1;
+    }
+    return result;
 }
 
 daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request)

@@ -325,6 +325,9 @@ static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
     if (mutating_call(h)) {
         return outcome(h, (daran_result_t)h->fail_result);
     }
+    if (prop == DARAN_PROP_TELEMETRY_PERIOD) {
+        h->period_writes++;
+    }
     if (prop == DARAN_PROP_REQUESTED_STATE) {
         if (value.u32 == DARAN_STATE_CLOSED_LOOP && blocking_flags(h)) {
             return outcome(h, DARAN_ERR_MOTOR_FAULT); /* as a drive would */

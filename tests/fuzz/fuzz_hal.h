@@ -40,6 +40,7 @@ typedef struct fuzz_hal {
     daran_value_t last_set_value;
     daran_action_t last_action;
     char last_call; /* 's'et, 'm'ove, 'a'ction or 'p'ort: the last mutating call; 0 none */
+    uint32_t period_writes; /* accepted sets of axis0.telemetry.period, ever (not cleared) */
 
     /* fault injection: the fail_nth-th mutating call (set/move/action/port,
      * counted since fuzz_hal_arm()) returns fail_result; 0 = off */

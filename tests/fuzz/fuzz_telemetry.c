@@ -67,6 +67,7 @@ static struct {
     bool running;       /* a report went out (or was due) and the period stayed > 0 */
     uint32_t last;      /* tick of that report */
     float last_period;  /* the period then */
+    uint32_t period_writes; /* the HAL's count of accepted period writes at the last tick */
 } st;
 
 static uint32_t next(void)
@@ -226,6 +227,12 @@ static void one_tick(uint32_t step, bool getter_fault)
     daran_result_t r = daran_telemetry_tick(&st.drive, st.tick, st.rate);
     st.in_tick = false;
     size_t gets = h->n_get - gets_before;
+    /* an accepted write of the period restarts its schedule: the tick after
+     * it reports at once (a new period never waits for the old one's report) */
+    if (h->period_writes != st.period_writes) {
+        st.period_writes = h->period_writes;
+        st.running = false;
+    }
     bool failed = getter_fault && nth <= gets;
     fuzz_hal_arm_get(h, 0, 0);
     FUZZ_CHECK(failed == (r != DARAN_OK), "tick answered %d, a getter %s", (int)r,

@@ -530,6 +530,27 @@ static void test_switching_telemetry_on_reports_at_the_next_tick(void)
     TEST_ASSERT_EQUAL_INT(0, strncmp(m->out, "@1 0.05 ", 8));
 }
 
+static void test_a_new_period_starts_at_once_not_after_the_old_report(void)
+{
+    /* from 10 s to 10 ms: the next report comes at the next tick and then
+     * every 10 ms, not after the 10 s the old period still owed */
+    mock_t *m = telemetry_mock(10.0f, 1);
+    (void)daran_telemetry_tick(&m->drive, 0, 1000);
+    TEST_ASSERT_EQUAL_UINT(1, m->n_writes);
+    mock_send_line(m, "w axis1.telemetry.period 0.01");
+    mock_clear(m);
+    for (uint32_t tick = 1; tick <= 101; tick++) {
+        (void)daran_telemetry_tick(&m->drive, tick, 1000);
+    }
+    TEST_ASSERT_EQUAL_UINT(11, m->n_writes); /* ticks 1, 11, ..., 101 */
+    /* a refused write changes nothing: no early report */
+    mock_clear(m);
+    ASSERT_ERROR(m, "w axis1.telemetry.period -1", "value out of range");
+    mock_clear(m);
+    (void)daran_telemetry_tick(&m->drive, 105, 1000); /* the last report was at 101 */
+    TEST_ASSERT_EQUAL_UINT(0, m->n_writes);
+}
+
 static void test_the_first_tick_reports_whatever_the_tick_count(void)
 {
     /* a port whose counter is far from 0 when telemetry is first on */
@@ -604,6 +625,7 @@ int main(void)
     RUN_TEST(test_a_report_ignores_field_bits_past_the_ninth_a_hal_returns);
     RUN_TEST(test_reports_come_every_period_rounded_to_whole_ticks);
     RUN_TEST(test_switching_telemetry_on_reports_at_the_next_tick);
+    RUN_TEST(test_a_new_period_starts_at_once_not_after_the_old_report);
     RUN_TEST(test_the_first_tick_reports_whatever_the_tick_count);
     RUN_TEST(test_a_failing_read_skips_the_report_and_says_why);
     RUN_TEST(test_a_report_keeps_the_request_checksum_state_of_replies);
