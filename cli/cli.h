@@ -160,6 +160,8 @@ bool cli_parse_seconds(const char *text, uint32_t *ms);
 
 /** Write s[0..len) as a JSON string. */
 void cli_json_string(FILE *out, const char *s, size_t len);
+/** Write `,"name":"text"` (a member after the first, text escaped). */
+void cli_json_member(FILE *out, const char *name, const char *text);
 /** Write a drive's number text as a JSON number (nan/inf as strings). */
 void cli_json_number(FILE *out, const char *s, size_t len);
 

@@ -282,9 +282,7 @@ static void print_clear_json(uint8_t id, const clear_result_t *c)
             cli_json_number(stdout, c->kept, strlen(c->kept));
         }
         if (c->refused != DARAN_OK) {
-            const char *phrase = daran_result_phrase(c->refused);
-            fputs(",\"error\":", stdout);
-            cli_json_string(stdout, phrase, strlen(phrase));
+            cli_json_member(stdout, "error", daran_result_phrase(c->refused));
         }
     }
     printf(",\"enabled\":%s}\n", c->have_state && c->state == STATE_CLOSED_LOOP ? "true" : "false");

@@ -99,10 +99,9 @@ static cli_status_t scan_ids(cli_session_t *s, uint8_t first, uint8_t last)
                     cli_json_number(stdout, f[k].text, f[k].len);
                 }
             } else {
-                fputs(",\"error\":", stdout);
-                const char *why = one == CLI_DRIVE_ERROR ? daran_result_phrase(result)
-                                                         : "unreadable reply";
-                cli_json_string(stdout, why, strlen(why));
+                cli_json_member(stdout, "error", one == CLI_DRIVE_ERROR
+                                                     ? daran_result_phrase(result)
+                                                     : "unreadable reply");
             }
             putchar('}');
         } else if (whole) {
@@ -197,9 +196,7 @@ static cli_status_t run_get(cli_session_t *s, int argc, char **argv)
                 fputs(",\"value\":", stdout);
                 cli_json_number(stdout, value.text, value.len);
             } else {
-                fputs(",\"error\":", stdout);
-                cli_json_string(stdout, daran_result_phrase(result),
-                                strlen(daran_result_phrase(result)));
+                cli_json_member(stdout, "error", daran_result_phrase(result));
             }
             putchar('}');
         } else if (status == CLI_OK) {
@@ -284,9 +281,7 @@ static cli_status_t run_set(cli_session_t *s, int argc, char **argv)
                 cli_json_number(stdout, kept, strlen(kept));
             }
             if (status == CLI_DRIVE_ERROR) {
-                fputs(",\"error\":", stdout);
-                cli_json_string(stdout, daran_result_phrase(refused),
-                                strlen(daran_result_phrase(refused)));
+                cli_json_member(stdout, "error", daran_result_phrase(refused));
             }
             putchar('}');
         } else if (status == CLI_OK) {
@@ -365,8 +360,7 @@ static cli_status_t send_one(cli_session_t *s, const char *text, size_t len, siz
             const char *what = status == CLI_DRIVE_ERROR ? daran_result_phrase(result)
                                : result == DARAN_ERR_NO_REPLY ? "no reply"
                                                               : "damaged reply";
-            fputs(",\"error\":", stdout);
-            cli_json_string(stdout, what, strlen(what));
+            cli_json_member(stdout, "error", what);
         }
         putchar('}');
     } else if (status == CLI_DRIVE_ERROR) {

@@ -33,3 +33,9 @@ void cli_json_number(FILE *out, const char *s, size_t len)
         cli_json_string(out, s, len);
     }
 }
+
+void cli_json_member(FILE *out, const char *name, const char *text)
+{
+    fprintf(out, ",\"%s\":", name);
+    cli_json_string(out, text, strlen(text));
+}

@@ -5,6 +5,7 @@ environment CTest sets: DARAN_CLI (the tool), DARAN_SIM (daran-sim).
 stdlib only; run by /usr/bin/python3."""
 import os
 import pty
+import sys
 import select
 import subprocess
 import threading
@@ -12,50 +13,25 @@ import time
 import tty
 import unittest
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "sim"))
+import can_pty_support  # noqa: E402  (the simulator's pty tests' Sim and end_process)
+
 DARAN = os.environ.get("DARAN_CLI", "daran")
 SIM = os.environ.get("DARAN_SIM", "daran-sim")
 
 
-class Sim:
+class Sim(can_pty_support.Sim):
     """daran-sim --pty with @drives drives (and @options); .path is its
     pseudo-terminal. Its stdout (replies to lines typed on its stdin) and
-    stderr are read in the background so it never blocks."""
+    stderr are read in the background so it never blocks; directive()
+    types a line on its stdin (`!fault 1 overtemp`)."""
 
     def __init__(self, drives=1, options=()):
-        self.proc = subprocess.Popen([SIM, "--pty", "--drives", str(drives)] + list(options),
-                                     stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                     stderr=subprocess.PIPE)
-        self.path = self.proc.stdout.readline().decode().strip()
+        super().__init__(SIM, ["--pty", "--drives", str(drives)] + list(options), 1)
+        self.path = self.paths[0]
         if not self.path.startswith("/dev/"):
+            self.stop()
             raise RuntimeError("daran-sim printed no pty path: %r" % self.path)
-        self.console = []
-        self.errors = []
-        for stream, into in ((self.proc.stdout, self.console), (self.proc.stderr, self.errors)):
-            threading.Thread(target=self._drain, args=(stream, into), daemon=True).start()
-
-    @staticmethod
-    def _drain(stream, into):
-        for line in stream:
-            into.append(line.decode(errors="replace").rstrip("\n"))
-
-    def directive(self, line):
-        """A line on daran-sim's stdin: a directive (`!fault 1 overtemp`)."""
-        self.proc.stdin.write((line + "\n").encode())
-        self.proc.stdin.flush()
-
-    def stop(self):
-        if self.proc.poll() is None:
-            self.proc.terminate()
-            try:
-                self.proc.wait(timeout=5)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
-                self.proc.wait()
-        for stream in (self.proc.stdin, self.proc.stdout, self.proc.stderr):
-            try:
-                stream.close()
-            except OSError:
-                pass
 
     def __enter__(self):
         return self

@@ -25,6 +25,8 @@ import threading
 import time
 import tty
 
+import can_pty_support
+
 
 class Sim:
     """daran-sim --pty, its port opened raw, stderr kept in a file."""
@@ -63,12 +65,7 @@ class Sim:
         if getattr(self, "fd", None) is not None:
             os.close(self.fd)
             self.fd = None
-        self.proc.terminate()
-        try:
-            self.proc.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            self.proc.kill()
-            self.proc.wait()
+        can_pty_support.end_process(self.proc)
 
 
 def lines_of(buf):

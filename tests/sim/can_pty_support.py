@@ -21,6 +21,19 @@ def require(module, package):
         sys.exit(77)
 
 
+def end_process(proc):
+    """SIGTERM to @proc (a subprocess.Popen) unless it has ended, SIGKILL
+    when it is still there 5 s later; its exit status."""
+    if proc.poll() is None:
+        proc.terminate()
+        try:
+            proc.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+    return proc.returncode
+
+
 class Sim:
     """daran-sim with @options; paths holds the pty paths it printed, in
     order (the ASCII link's first with --pty, then --slcan's, --usbcan's)."""
@@ -47,13 +60,14 @@ class Sim:
         self.proc.stdin.flush()
 
     def stop(self):
-        """SIGTERM; True when daran-sim died of it, as it should."""
-        self.proc.terminate()
-        try:
-            self.proc.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            self.proc.kill()
-            self.proc.wait()
+        """SIGTERM; True when daran-sim died of it, as it should. Its pipes
+        are closed."""
+        end_process(self.proc)
+        for stream in (self.proc.stdin, self.proc.stdout, self.proc.stderr):
+            try:
+                stream.close()
+            except OSError:
+                pass
         return self.proc.returncode in (-15, 143)
 
 
