@@ -285,9 +285,11 @@ static cli_status_t run_set(cli_session_t *s, int argc, char **argv)
             }
             putchar('}');
         } else if (status == CLI_OK) {
-            printf("%s %s%s%s%s\n", argv[i], kept, cli_same_number(argv[i + 1], kept) ? "" : " (asked ",
-                   cli_same_number(argv[i + 1], kept) ? "" : argv[i + 1],
-                   cli_same_number(argv[i + 1], kept) ? "" : ")");
+            if (cli_same_number(argv[i + 1], kept)) {
+                printf("%s %s\n", argv[i], kept);
+            } else {
+                printf("%s %s (asked %s)\n", argv[i], kept, argv[i + 1]);
+            }
         }
     }
     if (s->options.json) {
