@@ -21,7 +21,9 @@ int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
 {
     /* Exactly: value * 100.0f + 0.5f rounds twice, and a value within an ulp
      * of a half count went up. |value| = m * 2^-shift with m < 2^24, so
-     * m * 100 < 2^31 is exact and one shift rounds it, half away from zero. */
+     * m * 100 < 2^31 is exact in 32 bits and one shift rounds it, half away
+     * from zero. A shift of 0 or less is |value| >= 2^23: far past the
+     * limit (inf and NaN too), so no wider arithmetic is needed. */
     uint32_t bits;
     memcpy(&bits, &value, sizeof bits);
     uint32_t negative = bits >> 31;
@@ -33,22 +35,19 @@ int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
         biased = 1u; /* a subnormal: the same scale as the least normal */
     }
     int shift = 150 - (int)biased;
-    uint64_t product = (uint64_t)significand * 100u;
-    uint64_t magnitude;
-    if (shift <= 0) {
-        magnitude = shift < -20 ? UINT64_MAX : product << -shift; /* inf and NaN: beyond */
-    } else if (shift > 40) {
-        magnitude = 0;
-    } else {
-        magnitude = (product + ((uint64_t)1 << (shift - 1))) >> shift;
-    }
     uint32_t limit = negative != 0u ? 32768u : 32767u;
+    uint32_t magnitude = limit + 1u;
+    if (shift > 31) {
+        magnitude = 0;
+    } else if (shift > 0) {
+        uint32_t product = significand * 100u;
+        magnitude = (product + (1u << (shift - 1))) >> shift;
+    }
     int fits = magnitude <= limit;
     if (!fits) {
         magnitude = limit;
     }
-    uint32_t raw = (uint32_t)magnitude;
-    daran_can_put_u16(bytes, negative != 0u ? 0u - raw : raw);
+    daran_can_put_u16(bytes, negative != 0u ? 0u - magnitude : magnitude);
     return saturate || fits;
 }
 

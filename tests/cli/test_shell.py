@@ -135,6 +135,17 @@ class Session:
             if last.startswith(PROMPT) or time.monotonic() > end:
                 return last
 
+    def last_row(self, expected, timeout=2.0):
+        """The last row once it equals `expected` (or when the time is up):
+        a report may be on its way to the screen, with the prompt drawn
+        again only after it, at the moment one looks."""
+        end = time.monotonic() + timeout
+        while True:
+            self.read(0.02)
+            last = self.screen()[-1]
+            if last == expected or time.monotonic() > end:
+                return last
+
     def end(self, timeout=5.0):
         """Ctrl-U (drop the line), Ctrl-D; the exit status."""
         self.type("\x15\x04")
@@ -240,11 +251,11 @@ class ShellTest(unittest.TestCase):
         shown = sum(row.startswith("@1 ") for row in s.screen())
         s.read(0.4)
         self.assertGreater(sum(row.startswith("@1 ") for row in s.screen()), shown + 3)
-        self.assertEqual(s.screen()[-1], PROMPT)
+        self.assertEqual(s.last_row(PROMPT), PROMPT)
         # a half-typed line survives a report: it is drawn again below it
         s.type("get 1 vbus")
         s.read(0.2)
-        self.assertEqual(s.screen()[-1], PROMPT + "get 1 vbus")
+        self.assertEqual(s.last_row(PROMPT + "get 1 vbus"), PROMPT + "get 1 vbus")
         since = s.rows() - 1
         s.line("_voltage", r"^vbus_voltage 24$")
         s.line("r vbus_voltage 1", r"^24$")
