@@ -5,7 +5,8 @@
 # drive answers its own lines), gives the same ASCII replies: floats,
 # integers, signed values, the 64-bit serial number, error registers, a
 # value written through the bridge, checksummed answers. Then --help names
-# --bridge, and --bridge sends the link's lines to drive 1 alone.
+# --bridge, and --bridge sends the link's lines to drive 1 alone, and a
+# session recorded with --bridge is replayed with it.
 # usage: bridge_twins.sh DARAN_SIM
 set -uo pipefail
 sim=$1
@@ -60,5 +61,22 @@ got=$(grep -c '^can ' "$tmp/bridged")
 # drive 1) with --bridge, by every drive without
 printf 'r axis0.config.can_node_id\n' | "$sim" --drives 3 --bridge > "$tmp/one" 2> /dev/null
 [ "$(cat "$tmp/one")" = "$(printf '1\r')" ] || fail "--bridge: a broadcast read answered: $(cat -A "$tmp/one")"
+
+# a session recorded with --bridge replays with --bridge (tools/replay reads
+# it from the header): `f 4` (no such drive) is answered `error: no reply`
+# by the bridge, and not at all on the plain line
+printf 'f 2\nf 4\nr axis3.config.can_node_id\n' |
+    "$sim" --drives 3 --bridge --record "$tmp/rec" > "$tmp/rec.out" 2> /dev/null ||
+    fail "--bridge --record: exit status $?"
+grep -v '^can ' "$tmp/rec.out" > "$tmp/rec.answers"
+grep -q 'no reply' "$tmp/rec.answers" || fail "the recorded session has no bridge-only answer"
+replay=$(dirname "$0")/../../tools/replay
+if "$replay" --sim "$sim" "$tmp/rec" > "$tmp/replayed" 2> "$tmp/replayed.err"; then
+    grep -v '^can ' "$tmp/replayed" > "$tmp/replayed.answers"
+    cmp -s "$tmp/rec.answers" "$tmp/replayed.answers" ||
+        { fail "tools/replay of a --bridge recording answers otherwise:"; diff "$tmp/rec.answers" "$tmp/replayed.answers" >&2; }
+else
+    fail "tools/replay: $(cat "$tmp/replayed.err")"
+fi
 
 verdict "daran-sim --bridge: bridged answers are the remote's own"
