@@ -212,12 +212,12 @@ class Watch(unittest.TestCase):
             with self.subTest(mode=mode):
                 r = daran(self.sim.path, "send", "f 1")
                 start = float(r.stdout.split()[0])
-                target = round(start) + 90
-                # a trapezoid of about 1.05 s: 15 r/min = 90 deg/s
-                r = daran(self.sim.path, "--timeout", "0.05", "send", "q 1 %d 15 300" % target)
+                target = round(start) + 180
+                # a trapezoid of about 0.5 s: 60 r/min = 360 deg/s, reached in 0.02 s
+                r = daran(self.sim.path, "--timeout", "0.05", "send", "q 1 %d 60 3000" % target)
                 self.assertEqual(r.returncode, 0, r.stderr)
                 r = daran(self.sim.path, "--json", "watch", "1", "pos", "vel", *mode,
-                          "--duration", "1.4")
+                          "--period", "0.02", "--duration", "0.8")
                 self.assertEqual(r.returncode, 0, r.stderr)
                 samples = [json.loads(line) for line in r.stdout.splitlines()]
                 pos = [s["pos"] for s in samples]
