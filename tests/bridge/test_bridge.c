@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "daran_ascii.h"
+#include "daran_properties.h"
 #include "minimal_hal.h"
 #include "unity.h"
 
@@ -287,6 +288,75 @@ static void test_values_beyond_the_scaled_range_are_refused_before_anything_is_s
     TEST_ASSERT_EQUAL_STRING("059 00 00 20 41 ff 7f 00 00", frame_text(0));
 }
 
+/* A scaled field (value x 100 in an s16) takes exactly -327.68..327.67 on
+ * the bridge: the ends go out, a hair past them and far past are refused,
+ * and any value inside goes out (the writer's answer, not only its bytes). */
+static void test_a_scaled_field_takes_its_whole_range_and_nothing_past_it(void)
+{
+    static const struct {
+        const char *line;
+        const char *frame; /* NULL: refused */
+    } cases[] = {
+        {"p 2 10 327.67 0", "05b 00 00 20 41 ff 7f 00 00"},
+        {"p 2 10 -327.68 0", "05b 00 00 20 41 00 80 00 00"},
+        {"p 2 10 1 -1", "05b 00 00 20 41 64 00 9c ff"},
+        {"p 2 10 327.675 0", "05b 00 00 20 41 ff 7f 00 00"}, /* a float just below 327.675 */
+        {"p 2 10 327.68 0", NULL},
+        {"p 2 10 -327.69 0", NULL},
+        {"p 2 10 0 1e30", NULL},
+        {"p 2 10 0 -8388608", NULL},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        clear_out();
+        logged = 0;
+        line(cases[i].line);
+        if (cases[i].frame == NULL) {
+            TEST_ASSERT_EQUAL_STRING_MESSAGE("error: value out of range\r\n", out, cases[i].line);
+            TEST_ASSERT_EQUAL_UINT64_MESSAGE(0, logged, cases[i].line);
+        } else {
+            TEST_ASSERT_EQUAL_STRING_MESSAGE("", out, cases[i].line);
+            TEST_ASSERT_EQUAL_STRING_MESSAGE(cases[i].frame, frame_text(0), cases[i].line);
+        }
+    }
+}
+
+/* Every property with a CAN address is read through the bridge at that
+ * address (the property list's eighth column, can_index.h's runs). */
+#define BRIDGE_AXIS_AXIS true
+#define BRIDGE_AXIS_SYSTEM false
+#define BRIDGE_ROW_(id, path, scope, type, access, range, unit, can) {path, BRIDGE_AXIS_##scope, can},
+static const struct {
+    const char *path;
+    bool axis;
+    unsigned address;
+} bridge_rows[] = {DARAN_PROPERTY_LIST(BRIDGE_ROW_)};
+#undef BRIDGE_ROW_
+#undef BRIDGE_AXIS_AXIS
+#undef BRIDGE_AXIS_SYSTEM
+
+static void test_every_property_is_read_at_its_own_address(void)
+{
+    size_t read = 0;
+    for (size_t i = 0; i < sizeof bridge_rows / sizeof bridge_rows[0]; i++) {
+        if (bridge_rows[i].address == 0u) {
+            continue; /* serial_number: its two halves (test_serial_number_and_identity) */
+        }
+        char text[128];
+        (void)snprintf(text, sizeof text, bridge_rows[i].axis ? "r axis2.%s" : "r %s 2",
+                       bridge_rows[i].path);
+        char want[16];
+        (void)snprintf(want, sizeof want, "05e %02x %02x", bridge_rows[i].address & 0xFFu,
+                       bridge_rows[i].address >> 8);
+        clear_out();
+        logged = 0;
+        line(text);
+        TEST_ASSERT_TRUE_MESSAGE(logged >= 1u, text);
+        TEST_ASSERT_EQUAL_STRING_LEN_MESSAGE(want, frame_text(0), strlen(want), text);
+        read++;
+    }
+    TEST_ASSERT_GREATER_THAN_UINT64(150, read);
+}
+
 static void test_checks_of_a_local_line_apply(void)
 {
     static const struct {
@@ -444,6 +514,8 @@ int main(void)
     RUN_TEST(test_checksummed_query_gets_checksummed_answer);
     RUN_TEST(test_q_with_omitted_values_reads_the_remotes_limits_first);
     RUN_TEST(test_values_beyond_the_scaled_range_are_refused_before_anything_is_sent);
+    RUN_TEST(test_a_scaled_field_takes_its_whole_range_and_nothing_past_it);
+    RUN_TEST(test_every_property_is_read_at_its_own_address);
     RUN_TEST(test_checks_of_a_local_line_apply);
     RUN_TEST(test_a_drive_that_does_not_answer_is_no_reply_after_the_timeout);
     RUN_TEST(test_lines_wait_while_a_query_waits);

@@ -6,7 +6,7 @@ Copies the source tree (without build/ and .git/) to a scratch directory,
 builds the unit test programs there (gcc, Debug, ASan + UBSan, so a mutant
 that only writes out of bounds is caught too), then for a random sample of
 mutants changes one operator (== != < <= > >= && || and +1u/-1u), rebuilds,
-runs every unit program (tests/unit's and tests/number's) and restores the
+runs every unit program (tests/unit's, tests/number's and the bridge's) and restores the
 file.
 
 A survivor is a gap in the tests unless it is an equivalent mutant listed,
@@ -42,9 +42,11 @@ def test_programs(repo):
     block = re.search(r"set\(DARAN_UNIT_AREAS(.*?)\)", text, re.S)
     # porting_float_intervals: a core whose float rows have interval ranges,
     # the only build that compiles the interval check (DARAN_F32_INTERVALS)
+    # test_bridge: the CAN bridge's own suite (can_bridge.c, and the scaled
+    # writer's refusals, which only the bridge asks for)
     return (["tests/unit/unit_" + a for a in block.group(1).split()]
             + ["tests/number/number_unit", "tests/number/number_pow10",
-               "tests/porting/porting_float_intervals"])
+               "tests/porting/porting_float_intervals", "tests/bridge/test_bridge"])
 
 
 def equivalent_mutants(repo):
