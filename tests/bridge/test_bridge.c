@@ -357,6 +357,39 @@ static void test_every_property_is_read_at_its_own_address(void)
     TEST_ASSERT_GREATER_THAN_UINT64(150, read);
 }
 
+/* Lines at the edges of what the bridge decides by itself: a broadcast q
+ * with every value goes out (only one missing a value needs the remote's
+ * limits, C35), q with its velocity alone is checked before it reads the
+ * remote's acceleration limit, and writes go out whether broadcast or of
+ * another drive's node id (C34 keeps only a broadcast node-id write here). */
+static void test_lines_at_the_edges_of_what_the_bridge_decides(void)
+{
+    static const struct {
+        const char *line;
+        const char *answer;
+        const char *first_frame_id; /* NULL: nothing sent */
+    } cases[] = {
+        {"q 0 10 20 30", "", "01a"},
+        {"q 2 10 400", "error: value out of range\r\n", NULL},
+        {"q 2 10 20", "", "05e"},
+        {"w axis0.output_shaft.vel_limit 100", "", "01f"},
+        {"w axis2.config.can_node_id 5", "", "05f"},
+        {"w axis0.config.can_node_id 5", "", NULL},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        clear_out();
+        logged = 0;
+        line(cases[i].line);
+        TEST_ASSERT_EQUAL_STRING_MESSAGE(cases[i].answer, out, cases[i].line);
+        if (cases[i].first_frame_id == NULL) {
+            TEST_ASSERT_EQUAL_UINT64_MESSAGE(0, logged, cases[i].line);
+        } else {
+            TEST_ASSERT_EQUAL_STRING_LEN_MESSAGE(cases[i].first_frame_id, frame_text(0), 3,
+                                                 cases[i].line);
+        }
+    }
+}
+
 static void test_checks_of_a_local_line_apply(void)
 {
     static const struct {
@@ -516,6 +549,7 @@ int main(void)
     RUN_TEST(test_values_beyond_the_scaled_range_are_refused_before_anything_is_sent);
     RUN_TEST(test_a_scaled_field_takes_its_whole_range_and_nothing_past_it);
     RUN_TEST(test_every_property_is_read_at_its_own_address);
+    RUN_TEST(test_lines_at_the_edges_of_what_the_bridge_decides);
     RUN_TEST(test_checks_of_a_local_line_apply);
     RUN_TEST(test_a_drive_that_does_not_answer_is_no_reply_after_the_timeout);
     RUN_TEST(test_lines_wait_while_a_query_waits);
