@@ -1,7 +1,8 @@
 #!/bin/sh
 # Runs the core's unit tests under other compile-time options of
-# daran_config.h (LF-only replies, ring and line sizes, help text or the
-# multi-motor commands left out), each in its own build directory
+# daran_config.h (LF-only replies, ring and line sizes, help text, the
+# multi-motor commands, CAN, the bridge, discovery, telemetry, the port's
+# commands or S-curves left out, and the last four together), each in its own build directory
 # (build/unit-opt-NAME), gcc + ASan + UBSan. Tests of a feature that is
 # compiled out skip themselves.
 # Usage: tests/unit/run_option_matrix.sh [NAME "FLAGS"]...   (no arguments: the
@@ -48,7 +49,12 @@ if [ $# -eq 0 ]; then
          no-help "-DDARAN_ENABLE_HELP=0" \
          no-multi "-DDARAN_ENABLE_MULTI_MOTOR=0" \
          no-can "-DDARAN_ENABLE_CAN=0" \
-         no-bridge "-DDARAN_ENABLE_CAN_BRIDGE=0"
+         no-bridge "-DDARAN_ENABLE_CAN_BRIDGE=0" \
+         no-discovery "-DDARAN_ENABLE_DISCOVERY=0" \
+         no-telemetry "-DDARAN_ENABLE_TELEMETRY=0" \
+         no-port-commands "-DDARAN_ENABLE_PORT_COMMANDS=0" \
+         no-s-curve "-DDARAN_ENABLE_S_CURVE=0" \
+         no-features "-DDARAN_ENABLE_DISCOVERY=0 -DDARAN_ENABLE_TELEMETRY=0 -DDARAN_ENABLE_PORT_COMMANDS=0 -DDARAN_ENABLE_S_CURVE=0"
 fi
 while [ $# -ge 2 ]; do
   run_one "$1" "$2" || failed=$((failed + 1))

@@ -664,6 +664,7 @@ static void test_mq_trapezoid_cruise_is_the_hand_worked_value(void)
     assert_hand_worked(m, mv, 0, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
 }
 
+#if DARAN_ENABLE_S_CURVE
 static void test_mq_s_curve_cruise_is_the_hand_worked_value(void)
 {
     SKIP_IF_NO_MULTI();
@@ -749,6 +750,7 @@ static void test_mq_traj_mode_read_failure_answers_motor_fault_and_keeps_the_pre
     const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
     assert_hand_worked(m, mv, 90, HAND_TRAPEZOID_RPM, 60, GV | GR, __LINE__);
 }
+#endif /* DARAN_ENABLE_S_CURVE */
 
 static void test_mq_on_a_port_without_traj_mode_plans_a_trapezoid(void)
 {
@@ -1095,10 +1097,12 @@ int main(void)
     ADD(test_timed_mq_while_moving_times_the_distance_from_the_running_moves_end);
     ADD(test_mq_heading_reads_missing_or_failing);
     ADD(test_mq_trapezoid_cruise_is_the_hand_worked_value);
+#if DARAN_ENABLE_S_CURVE
     ADD(test_mq_s_curve_cruise_is_the_hand_worked_value);
     ADD(test_mq_s_curve_within_the_1e4_shortfall_runs_the_exact_triangle);
     ADD(test_mq_feasible_as_a_trapezoid_is_infeasible_as_an_s_curve);
     ADD(test_mq_traj_mode_read_failure_answers_motor_fault_and_keeps_the_preset);
+#endif
     ADD(test_mq_on_a_port_without_traj_mode_plans_a_trapezoid);
     ADD(test_q_and_mq_are_planned_by_the_drive_not_the_core);
     ADD(test_mt_starts_a_filtered_move_with_the_preset_bandwidth);

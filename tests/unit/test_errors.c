@@ -53,9 +53,11 @@ static const phrase_case_t phrase_cases[] = {
     {"trajectory infeasible", {"ms 1 100 1 1", NULL}, 0, 0, "mq 1 0"},
     {"trajectory infeasible", {"ms 1 100 0 10", NULL}, 0, 0, "mq 1 0"},
     {"trajectory infeasible", {"ms 1 100 2 0", NULL}, 0, 0, "mq 1 1"},
+#if DARAN_ENABLE_S_CURVE
     /* feasible as a trapezoid (A^2 T^2 = 254016 >= 4AD = 129600), not as an S-curve (8AD = 259200) */
     {"trajectory infeasible", {"w axis1.trap_traj.config.traj_mode 2", "ms 1 90 1.4 60", NULL},
      0, 0, "mq 1 0"},
+#endif
     {"estop active", {"st 1", NULL}, 0, 0, "t 1 10"},
     {"estop active", {NULL}, DARAN_FLAG_ESTOP, DARAN_STATE_IDLE, "v 1 10"},
     {"motor fault", {NULL}, DARAN_FLAG_OVERTEMP, DARAN_STATE_IDLE, "c 1 1"},
