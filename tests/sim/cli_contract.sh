@@ -36,6 +36,9 @@ printf 'f 1' | "$sim" > "$tmp/out"
 
 # Replies must arrive while stdin is still open.
 coproc SIM { "$sim" --drives 2; }
+# bash unsets SIM_PID once it has reaped the coprocess, which may happen as
+# soon as its stdin closes: keep the pid for the wait below
+sim_pid=$SIM_PID
 echo "f 2" >&"${SIM[1]}"
 if read -r -t 5 reply <&"${SIM[0]}"; then
     [ "${reply%$'\r'}" = "0 0" ] || fail "interactive reply '$reply'"
@@ -43,7 +46,7 @@ else
     fail "no reply within 5 s: stdout not flushed per line"
 fi
 exec {SIM[1]}>&-
-wait "$SIM_PID" || fail "interactive run exit status"
+wait "$sim_pid" || fail "interactive run exit status"
 
 printf 'q 1 90 60 60\n!advance 1\n' | "$sim" --trace "$tmp/t.csv" --tick-hz 2000 > /dev/null
 [ "$(head -1 "$tmp/t.csv")" = "time_s,pos_deg_1,vel_rpm_1,torque_nm_1,state_1" ] || fail "trace header"
