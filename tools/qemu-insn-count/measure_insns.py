@@ -47,8 +47,17 @@ def build_plugin(out_dir):
     lib = os.path.join(out_dir, "libinsn_count.so")
     if not os.path.exists(lib) or os.path.getmtime(lib) < os.path.getmtime(src):
         cc = os.environ.get("CC", "cc")
-        subprocess.run([cc, "-shared", "-fPIC", "-O2", "-fvisibility=hidden", "-o", lib, src],
-                       check=True)
+        # built beside and renamed over: two measurements started at once
+        # (CTest runs tests in parallel) never load a half-written plugin
+        fd, tmp = tempfile.mkstemp(prefix=".libinsn_count.", suffix=".so", dir=out_dir)
+        os.close(fd)
+        try:
+            subprocess.run([cc, "-shared", "-fPIC", "-O2", "-fvisibility=hidden", "-o", tmp, src],
+                           check=True)
+            os.replace(tmp, lib)
+        finally:
+            if os.path.exists(tmp):
+                os.remove(tmp)
     return lib
 
 
