@@ -1197,6 +1197,22 @@ static void run_status_case(const void *arg)
     expect_frame(__LINE__, 0, &want);
 }
 
+/* The status frame's velocity and torque counts (2.7) for a drive whose
+ * estimates are value and -value, through a fast read. */
+static void status_counts(float value, int32_t *vel, int32_t *torque)
+{
+    m->props[DARAN_PROP_VEL_ESTIMATE].f32 = value;
+    m->props[DARAN_PROP_TORQUE_ESTIMATE].f32 = -value;
+    mock_clear(m);
+    bus.n_sent = 0;
+    daran_can_frame_t fast_read = READ_FRAME(1, 0, 0);
+    TEST_ASSERT_TRUE(daran_can_receive(&can, &fast_read));
+    (void)daran_can_poll(&can);
+    TEST_ASSERT_EQUAL_UINT(1, bus.n_sent);
+    *vel = (int16_t)get_u16(bus.sent[0].data + 4);
+    *torque = (int16_t)get_u16(bus.sent[0].data + 6);
+}
+
 /* Every float near a half count (k + 0.5) / 100 for k = 0..32767, its
  * neighbours, and their negatives: the status frame's velocity and torque
  * are value x 100 rounded to the nearest count, ties away from zero (2.7,
@@ -1209,16 +1225,9 @@ static void test_the_status_frame_rounds_near_half_counts_to_the_nearest(void)
         float near_half = (float)(((double)k + 0.5) / 100.0);
         float value = nextafterf(nextafterf(nextafterf(near_half, -INFINITY), -INFINITY), -INFINITY);
         for (int step = 0; step < 7; step++, value = nextafterf(value, INFINITY)) {
-            m->props[DARAN_PROP_VEL_ESTIMATE].f32 = value;
-            m->props[DARAN_PROP_TORQUE_ESTIMATE].f32 = -value;
-            mock_clear(m);
-            bus.n_sent = 0;
-            daran_can_frame_t fast_read = READ_FRAME(1, 0, 0);
-            TEST_ASSERT_TRUE(daran_can_receive(&can, &fast_read));
-            (void)daran_can_poll(&can);
-            TEST_ASSERT_EQUAL_UINT(1, bus.n_sent);
-            int32_t vel = (int16_t)get_u16(bus.sent[0].data + 4);
-            int32_t torque = (int16_t)get_u16(bus.sent[0].data + 6);
+            int32_t vel;
+            int32_t torque;
+            status_counts(value, &vel, &torque);
             if (vel != scaled_of(value) || torque != scaled_of(-value)) {
                 if (wrong++ == 0u) {
                     first_wrong = value;
@@ -1255,18 +1264,13 @@ static void test_the_status_frame_saturates_at_every_scale(void)
     for (size_t i = 0; i < count; i++) {
         for (int sign = 1; sign >= -1; sign -= 2) {
             float value = (float)sign * values[i];
-            m->props[DARAN_PROP_VEL_ESTIMATE].f32 = value;
-            m->props[DARAN_PROP_TORQUE_ESTIMATE].f32 = -value;
-            mock_clear(m);
-            bus.n_sent = 0;
-            daran_can_frame_t fast_read = READ_FRAME(1, 0, 0);
-            TEST_ASSERT_TRUE(daran_can_receive(&can, &fast_read));
-            (void)daran_can_poll(&can);
-            TEST_ASSERT_EQUAL_UINT(1, bus.n_sent);
+            int32_t vel;
+            int32_t torque;
+            status_counts(value, &vel, &torque);
             char what[48];
             (void)snprintf(what, sizeof what, "%a", (double)value);
-            TEST_ASSERT_EQUAL_INT32_MESSAGE(scaled_of(value), (int16_t)get_u16(bus.sent[0].data + 4), what);
-            TEST_ASSERT_EQUAL_INT32_MESSAGE(scaled_of(-value), (int16_t)get_u16(bus.sent[0].data + 6), what);
+            TEST_ASSERT_EQUAL_INT32_MESSAGE(scaled_of(value), vel, what);
+            TEST_ASSERT_EQUAL_INT32_MESSAGE(scaled_of(-value), torque, what);
         }
     }
 }
