@@ -48,16 +48,34 @@ daran_result_t daran_cmd_ms(daran_drive_t *drive, const daran_request_t *request
 }
 
 
+/* Whether a cruise-less move peaking at @p peak (deg/s) stays within the
+ * drive's velocity limit (output_shaft.vel_limit); a port without that
+ * property has no limit to keep. */
+static daran_result_t within_vel_limit(daran_drive_t *drive, float peak)
+{
+    daran_value_t limit;
+    daran_result_t result = daran_get(drive, DARAN_PROP_SHAFT_VEL_LIMIT, &limit);
+    if (result == DARAN_ERR_INVALID_PROPERTY) {
+        return DARAN_OK;
+    }
+    if (result == DARAN_OK && peak > limit.f32 * DEG_PER_S_PER_RPM) {
+        result = DARAN_ERR_TRAJECTORY_INFEASIBLE;
+    }
+    return result;
+}
+
 /* Cruise velocity that covers distance d (deg) in exactly t (s) at accel a
  * (deg/s^2), the move going to the HAL as an ordinary trapezoid in r/min and
  * (r/min)/s. A trapezoid's ramps cover v^2/a together, an S-curve's (each
  * ramp 2v/a long) 2v^2/a, so t = d/v + ramps/v: v is the smaller root of
  * s v^2 - a t v + a d = 0 with s = 1 or 2, written as 2ad / (at + sqrt(...))
- * so no cancellation eats its digits. A zero duration or acceleration can
- * only be kept by a drive that need not move (spec 10.1, D41). @p move comes
- * with the target alone (nothing given, no cruise, no rate). */
-static daran_result_t timed_move(float d, float t, float a, bool s_curve, float slack,
-                                 daran_move_t *move)
+ * so no cancellation eats its digits. When a cannot cover d in t the drive
+ * keeps the time (spec 10.5, D42): the cruise-less move that lands at t. A
+ * zero duration or acceleration can only be kept by a drive that need not
+ * move (spec 10.1, D41). @p move comes with the target alone (nothing given,
+ * no cruise, no rate). */
+static daran_result_t timed_move(daran_drive_t *drive, float d, float t, float a, bool s_curve,
+                                 float slack, daran_move_t *move)
 {
     if (d == 0.0f) {
         return DARAN_OK; /* nothing to plan: the drive keeps its settings and any running move */
@@ -67,35 +85,36 @@ static daran_result_t timed_move(float d, float t, float a, bool s_curve, float 
     }
     move->given = DARAN_GIVEN_VEL | DARAN_GIVEN_RATE;
     float ramps = s_curve ? 8.0f : 4.0f;
-    /* A duration short of the least one by less than @p slack seconds (a
-     * CAN preset's, C13) runs in the least: the triangle at acceleration a. */
-#if DARAN_ENABLE_CAN
-    if (slack > 0.0f) {
-        float least = sqrtf(ramps * d / a);
-        if (t < least && least - t < slack) {
-            t = least;
-        }
-    }
-#else
-    (void)slack;
-#endif
     float at = a * t;
     float discriminant = at * at - ramps * a * d;
-    float v;
-    float rate;
     if (!daran_is_finite(discriminant)) {
         return DARAN_ERR_OUT_OF_RANGE;
     }
+    float v;
+    float rate;
     if (discriminant >= 0.0f) {
         v = 2.0f * a * d / (at + sqrtf(discriminant));
         rate = a;
-    } else if (-discriminant <= TIMED_MOVE_SLACK * at * at) {
+    } else {
         /* The triangle that lands exactly on time: peak 2d/t, acceleration
-         * 4d/t^2 (trapezoid) or 8d/t^2 (S-curve). */
+         * 4d/t^2 (trapezoid) or 8d/t^2 (S-curve). A host's least duration
+         * (float32 can push it a hair short, D31; a CAN preset's truncated
+         * to 0.01 s, C13) runs whatever the limit, as a duration just long
+         * enough would; a shorter one only within the velocity limit. */
         v = 2.0f * d / t;
         rate = ramps * d / (t * t);
-    } else {
-        return DARAN_ERR_TRAJECTORY_INFEASIBLE;
+        bool least = -discriminant <= TIMED_MOVE_SLACK * at * at;
+#if DARAN_ENABLE_CAN
+        least = least || sqrtf(ramps * d / a) - t < slack;
+#else
+        (void)slack;
+#endif
+        if (!least) {
+            daran_result_t result = within_vel_limit(drive, v);
+            if (result != DARAN_OK) {
+                return result;
+            }
+        }
     }
     move->vel_rpm = v / DEG_PER_S_PER_RPM;
     move->rate = rate / DEG_PER_S_PER_RPM;
@@ -182,7 +201,7 @@ static daran_result_t preset_move(daran_drive_t *drive, daran_shape_t shape, con
         return result;
     }
     float slack = drive->has_preset == DARAN_PRESET_FROM_CAN ? CAN_DURATION_STEP : 0.0f;
-    return timed_move(fabsf(move->pos_deg - setpoint.f32), values[1],
+    return timed_move(drive, fabsf(move->pos_deg - setpoint.f32), values[1],
                       values[2] * DEG_PER_S_PER_RPM, s_curve, slack, move);
 }
 

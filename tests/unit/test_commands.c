@@ -282,6 +282,9 @@ static void test_c_ramp_0_is_accepted_with_rate_0_in_modes_6_and_2(void)
 /* Expected cruise of a timed trapezoid, in double, from the float inputs. */
 typedef struct timed { bool feasible; double vel_rpm, rate; } timed_t;
 
+/* The mock's output_shaft.vel_limit, r/min (mock_hal.c). */
+#define MOCK_SHAFT_VEL_LIMIT 600.0
+
 static timed_t timed_expect_shape(float dist, float duration, float acc, bool s_curve)
 {
     /* trapezoid: T = D/V + V/A; S-curve: T = D/V + 2V/A (spec 10.3), so
@@ -294,7 +297,9 @@ static timed_t timed_expect_shape(float dist, float duration, float acc, bool s_
         t.feasible = true;
         t.vel_rpm = (a * tt - sqrt(disc)) / (2.0 * s) / 6.0;
         t.rate = acc;
-    } else if (-disc <= 1e-4 * a * a * tt * tt) {
+    } else if (-disc <= 1e-4 * a * a * tt * tt || 2.0 * d / tt / 6.0 <= MOCK_SHAFT_VEL_LIMIT) {
+        /* 10.5: the move that lands exactly at T, within the velocity limit
+         * unless T is the least duration float32 pushed a hair short */
         t.feasible = true;
         t.vel_rpm = 2.0 * d / tt / 6.0;
         t.rate = 4.0 * s * d / (tt * tt) / 6.0;
@@ -377,14 +382,72 @@ static void test_mq_of_a_subnormal_distance_is_a_step_with_nothing_given(void)
     TEST_ASSERT_TRUE(mv->vel_rpm == 0.0f && mv->rate == 0.0f);
 }
 
-static void test_infeasible_mq_is_refused_with_no_motion(void)
+/* 10.5 (D42): a duration the preset's acceleration cannot cover is kept:
+ * the cruise-less move landing at T, peak 2D/T, acceleration 4D/T^2. */
+static void test_mq_short_of_its_acceleration_keeps_the_time(void)
 {
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
+    /* 100 deg in 1 s, where 1 (r/min)/s = 6 deg/s^2 needs 8.2 s */
     ASSERT_SILENT(m, "ms 1 100 1 1");
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    ASSERT_MOVE_EQUALS(m, mv, {Q, GV | GR, 100, 200.0f / 6.0f, 0, 400.0f / 6.0f, 0, 0});
+    check_timed_move(m, mv, 100, 100, 1, 1, __LINE__);
+    /* the recorded vendor case: 2.30 s for 80 deg at 10 (r/min)/s, least 2.3094 s */
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 90.0f;
+    ASSERT_SILENT(m, "ms 1 10 2.3 10");
+    mv = ASSERT_MOVE(m, "mq 1 0");
+    check_timed_move(m, mv, 10, 80, 2.3f, 10, __LINE__);
+}
+
+/* Only a peak beyond output_shaft.vel_limit is refused, with no motion and
+ * the preset kept (D16); a peak at the limit runs. */
+static void test_mq_beyond_the_velocity_limit_is_refused_at_it_runs(void)
+{
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    /* 150 deg in 0.5 s peaks at 600 deg/s = 100 r/min */
+    m->props[DARAN_PROP_SHAFT_VEL_LIMIT].f32 = 99.99f;
+    ASSERT_SILENT(m, "ms 1 150 0.5 1");
     ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
-    ASSERT_SILENT(m, "ms 1 30 1.41 10");
-    ASSERT_ERROR(m, "mq 1 1", "trajectory infeasible");
+    TEST_ASSERT_EQUAL_UINT(0, mock_count(m, MOCK_CALL_MOVE));
+    m->props[DARAN_PROP_SHAFT_VEL_LIMIT].f32 = 100.0f;
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    ASSERT_MOVE_EQUALS(m, mv, {Q, GV | GR, 150, 100, 0, 400, 0, 0});
+    /* consumed: the next start has no preset */
+    ASSERT_ERROR(m, "mq 1 0", "no preset");
+    /* a far-off one at the default 600 r/min */
+    m->props[DARAN_PROP_SHAFT_VEL_LIMIT].f32 = 600.0f;
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
+    ASSERT_SILENT(m, "ms 1 100 0.03 1");
+    ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
+    mv = ASSERT_MOVE(m, "mp 1 0");
+    TEST_ASSERT_TRUE(mv->pos_deg == 100.0f);
+}
+
+/* The limit is read through the HAL only for a move the acceleration cannot
+ * cover: a port without the property has no limit, a failing read is
+ * answered and keeps the preset. */
+static void test_mq_velocity_limit_read_through_the_hal(void)
+{
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    ASSERT_SILENT(m, "ms 1 100 0.03 1");
+    mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_INVALID_PROPERTY, DARAN_PROP_SHAFT_VEL_LIMIT);
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    TEST_ASSERT_TRUE(mv->pos_deg == 100.0f && mv->given == (GV | GR));
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
+    ASSERT_SILENT(m, "ms 1 100 1 1");
+    mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_SHAFT_VEL_LIMIT);
+    ASSERT_ERROR(m, "mq 1 0", "motor fault");
+    TEST_ASSERT_EQUAL_UINT(0, mock_count(m, MOCK_CALL_MOVE));
+    mv = ASSERT_MOVE(m, "mq 1 0");
+    TEST_ASSERT_TRUE(mv->pos_deg == 100.0f);
+    /* a covered duration never asks */
+    ASSERT_SILENT(m, "ms 1 40 2.5 10");
+    mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_MOTOR_FAULT, DARAN_PROP_SHAFT_VEL_LIMIT);
+    mv = ASSERT_MOVE(m, "mq 1 1");
+    TEST_ASSERT_TRUE(mv->pos_deg == 140.0f);
 }
 
 static void test_mq_within_the_1e4_shortfall_runs_the_exact_triangle(void)
@@ -717,7 +780,7 @@ static void test_mq_s_curve_within_the_1e4_shortfall_runs_the_exact_triangle(voi
     assert_close(m, mv->rate, 60.0, "rate", __LINE__);
 }
 
-static void test_mq_feasible_as_a_trapezoid_is_infeasible_as_an_s_curve(void)
+static void test_mq_short_as_an_s_curve_keeps_the_time_at_8d_over_t2(void)
 {
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
@@ -727,16 +790,25 @@ static void test_mq_feasible_as_a_trapezoid_is_infeasible_as_an_s_curve(void)
     const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
     timed_t t = timed_expect(90, 1.4f, 60);
     assert_close(m, mv->vel_rpm, t.vel_rpm, "trapezoid vel_rpm", __LINE__);
+    assert_close(m, mv->rate, 60.0, "trapezoid rate", __LINE__);
     m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
     (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 2", DARAN_PROP_TRAJ_MODE);
     ASSERT_SILENT(m, "ms 1 90 1.4 60");
-    ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
-    /* the vendor's trapezoid minimum 2 sqrt(D/A) is far too short for the S-curve */
+    mv = ASSERT_MOVE(m, "mq 1 0");
+    double T = 1.4f;
+    assert_hand_worked(m, mv, 90, 2.0 * 90.0 / T / 6.0, 8.0 * 90.0 / (T * T) / 6.0, GV | GR,
+                       __LINE__);
+    /* the vendor's trapezoid minimum 2 sqrt(D/A) is far too short for the S-curve: kept too */
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
     ASSERT_SILENT(m, "ms 1 20 1.1547005383792515 10");
-    ASSERT_ERROR(m, "mq 0 0", "trajectory infeasible");
-    (void)ASSERT_SET(m, "w axis1.trap_traj.config.traj_mode 1", DARAN_PROP_TRAJ_MODE);
     mv = ASSERT_MOVE(m, "mq 0 0");
-    assert_close(m, mv->pos_deg, 20.0, "pos_deg", __LINE__);
+    T = 1.1547005383792515;
+    assert_close(m, mv->vel_rpm, 2.0 * 20.0 / T / 6.0, "S-curve vel_rpm", __LINE__);
+    assert_close(m, mv->rate, 8.0 * 20.0 / (T * T) / 6.0, "S-curve rate", __LINE__);
+    /* beyond the velocity limit it is refused as a trapezoid is */
+    m->props[DARAN_PROP_POS_SETPOINT].f32 = 0.0f;
+    ASSERT_SILENT(m, "ms 1 90 0.04 60");
+    ASSERT_ERROR(m, "mq 0 0", "trajectory infeasible");
 }
 
 /* The planner reads traj_mode through the HAL (D31). */
@@ -1084,7 +1156,9 @@ int main(void)
     ADD(test_spec_mq_example_moves_each_drive_to_arrive_together);
     ADD(test_mq_absolute_uses_the_distance_from_the_setpoint);
     ADD(test_mq_of_a_subnormal_distance_is_a_step_with_nothing_given);
-    ADD(test_infeasible_mq_is_refused_with_no_motion);
+    ADD(test_mq_short_of_its_acceleration_keeps_the_time);
+    ADD(test_mq_beyond_the_velocity_limit_is_refused_at_it_runs);
+    ADD(test_mq_velocity_limit_read_through_the_hal);
     ADD(test_mq_within_the_1e4_shortfall_runs_the_exact_triangle);
     ADD(test_mq_with_the_vendor_17_digit_minimum_duration_is_accepted);
     ADD(test_mq_with_zero_distance_is_accepted);
@@ -1100,7 +1174,7 @@ int main(void)
 #if DARAN_ENABLE_S_CURVE
     ADD(test_mq_s_curve_cruise_is_the_hand_worked_value);
     ADD(test_mq_s_curve_within_the_1e4_shortfall_runs_the_exact_triangle);
-    ADD(test_mq_feasible_as_a_trapezoid_is_infeasible_as_an_s_curve);
+    ADD(test_mq_short_as_an_s_curve_keeps_the_time_at_8d_over_t2);
     ADD(test_mq_traj_mode_read_failure_answers_motor_fault_and_keeps_the_preset);
 #endif
     ADD(test_mq_on_a_port_without_traj_mode_plans_a_trapezoid);

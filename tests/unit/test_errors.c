@@ -50,12 +50,13 @@ static const phrase_case_t phrase_cases[] = {
     {"line too long", {NULL}, 0, 0, long_line},
     {"invalid character", {NULL}, 0, 0, "t 1 10\x01"},
     {"no preset", {NULL}, 0, 0, "mq 1 1"},
-    {"trajectory infeasible", {"ms 1 100 1 1", NULL}, 0, 0, "mq 1 0"},
+    /* 10.5: 100 deg in 0.03 s peaks at 1,111 r/min, beyond the 600 of vel_limit */
+    {"trajectory infeasible", {"ms 1 100 0.03 1", NULL}, 0, 0, "mq 1 0"},
     {"trajectory infeasible", {"ms 1 100 0 10", NULL}, 0, 0, "mq 1 0"},
     {"trajectory infeasible", {"ms 1 100 2 0", NULL}, 0, 0, "mq 1 1"},
 #if DARAN_ENABLE_S_CURVE
-    /* feasible as a trapezoid (A^2 T^2 = 254016 >= 4AD = 129600), not as an S-curve (8AD = 259200) */
-    {"trajectory infeasible", {"w axis1.trap_traj.config.traj_mode 2", "ms 1 90 1.4 60", NULL},
+    /* 10.5: 90 deg in 0.04 s peaks at 750 r/min, beyond the 600 of vel_limit */
+    {"trajectory infeasible", {"w axis1.trap_traj.config.traj_mode 2", "ms 1 90 0.04 60", NULL},
      0, 0, "mq 1 0"},
 #endif
     {"estop active", {"st 1", NULL}, 0, 0, "t 1 10"},
@@ -173,7 +174,7 @@ static void order_case_run(const void *row_arg)
     SKIP_LINE_IF_NO_MULTI(c->line);
     mock_t *m = mock_new();
     if (c->preset) {
-        mock_send_line(m, "ms 1 100 1 1"); /* an infeasible mq */
+        mock_send_line(m, "ms 1 100 0.03 1"); /* an infeasible mq (10.5) */
         ASSERT_REPLY(m, "");
     }
     if (c->flags)

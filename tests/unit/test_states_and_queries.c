@@ -293,7 +293,7 @@ static void test_a_start_refused_by_its_values_keeps_the_preset(void)
 {
     SKIP_IF_NO_MULTI();
     mock_t *m = mock_new();
-    ASSERT_SILENT(m, "ms 1 100 1 1");
+    ASSERT_SILENT(m, "ms 1 100 0.03 1"); /* peak 1,111 r/min: beyond vel_limit (10.5) */
     ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
     ASSERT_ERROR(m, "mq 1 0", "trajectory infeasible");
     const daran_move_t *mv = ASSERT_MOVE(m, "mt 1 0");
