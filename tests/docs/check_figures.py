@@ -25,6 +25,10 @@ Figures and where they come from:
                the requirements of the conformance suite (the conf_req enum of
                testkit/conformance/conformance.h); always measured. The
                **C1**..**CN** list of docs/conformance.md must have as many.
+  transcripts, fuzz_harnesses, broken_hals, broken_fuzz_ports
+               the suites' own lists: tests/transcripts/*.txt with an .expected,
+               tests/fuzz's _harnesses, tests/conformance's _breaches,
+               tests/adopter-fuzz's _broken_* mistakes; always measured
 
 Forms a doc states them in (the number may carry thousands commas):
 
@@ -33,14 +37,15 @@ Forms a doc states them in (the number may carry thousands commas):
   "N bytes (`budget_core_flash`)" and the other budget tests' names within
       the same clause after the number: the figure that test measures, of
       the `cortex-m4-seed` build when the clause names that preset;
-  "N requirements" near "conformance".
+  "N requirements" near "conformance"; "N transcripts through the simulator",
+      "N libFuzzer harnesses", "N broken HALs", "N broken ports".
 
 Any other "N bytes" (N >= 100) on a line that names `daran_drive_t`,
 `daran_can_t`, a budget test, the CAN front end, the core's or the bridge's
-flash is reported as a figure the check cannot
-verify, unless it is a budget ("budget N", "against N", "N bytes
-(`DARAN_BUDGET_...`)"). docs/performance.md is not read: each of its figures
-is stamped with the commit it was measured at.
+flash is reported as a figure the check cannot verify, unless it is a budget
+("budget N", "against N", "N bytes (`DARAN_BUDGET_...`)").
+docs/performance.md is not read: each of its figures is stamped with the
+commit it was measured at.
 
 A figure this build cannot measure (no Cortex-M4 compiler, a host build for
 the flash, a build with other options) is listed as skipped, never as
@@ -74,6 +79,7 @@ PROBE = os.path.join(ROOT, "tests", "target", "sizeof_drive.c")
 UNREAD_DOCS = {"docs/performance.md"}
 
 NUMBER = r"(\d{1,3}(?:,\d{3})+|\d+)"
+COUNT = r"(?<![\w.,-])" + NUMBER  # a count on its own, not the 14 of clang-14
 TYPES = {"daran_drive_t": "drive_ram", "daran_can_t": "can_ram"}
 TARGET_FORM = re.compile(NUMBER + r"\s+bytes\s+on\s+(?:a\s+Cortex-M4F?|(x86-64))\b")
 TEST_KEYS = {"budget_core_flash": "core_flash", "budget_can_flash": "can_flash",
@@ -81,7 +87,7 @@ TEST_KEYS = {"budget_core_flash": "core_flash", "budget_can_flash": "can_flash",
              "budget_drive_ram": "drive_ram", "budget_can_ram": "can_ram"}
 TEST_FORM = re.compile(NUMBER + r"\s+bytes(?P<gap>(?:[^|;\n]|\n(?!\n)){0,80}?)`(budget_(?:core|can|bridge)_flash|"
                        r"budget_(?:drive|can)_ram|budget_core_stack)`")
-REQUIREMENTS_FORM = re.compile(r"\b" + NUMBER + r"\s+requirements\b")
+REQUIREMENTS_FORM = re.compile(COUNT + r"\s+requirements\b")
 ANY_BYTES = re.compile(r"(?<![\w.-])" + NUMBER + r"(?:\s|&nbsp;)*bytes\b")
 TRIGGER = re.compile(r"daran_drive_t|daran_can_t\b|`budget_\w+`|CAN front end|core flash|"
                      r"\bbridge\b.*\bflash\b", re.I)
@@ -138,6 +144,37 @@ def stack_figure(objdir, lib, nm, objdump, python):
     if not costs:
         raise SystemExit("check_budgets.py stack printed no figure:\n" + out)
     return max(costs)
+
+
+def count_in(root, rel, pattern, within=None):
+    """How many times @p pattern occurs in a file of the tree (in the part
+    @p within matches, when given)."""
+    text = open(os.path.join(root, rel), encoding="utf-8").read()
+    if within:
+        text = re.search(within, text, re.S).group(0)
+    return len(re.findall(pattern, text, re.M))
+
+
+def fuzz_harnesses(root):
+    """tests/fuzz's harnesses: its _harnesses list and what is appended to it."""
+    text = open(os.path.join(root, "tests", "fuzz", "CMakeLists.txt"), encoding="utf-8").read()
+    names = re.search(r"set\(_harnesses ([^)]*)\)", text).group(1).split()
+    return names + re.findall(r"list\(APPEND _harnesses (\w+)\)", text)
+
+
+# Counts of the test suites that the docs quote: (key, form, how it is counted).
+SOURCE_COUNTS = (
+    ("transcripts", re.compile(COUNT + r"\s+transcripts\s+through\s+the\s+simulator"),
+     lambda root: len([t for t in glob.glob(os.path.join(root, "tests", "transcripts", "*.txt"))
+                       if os.path.exists(t[:-4] + ".expected")])),
+    ("fuzz_harnesses", re.compile(COUNT + r"\s+libFuzzer\s+harnesses"),
+     lambda root: len(fuzz_harnesses(root))),
+    ("broken_hals", re.compile(COUNT + r"\s+broken\s+HALs"),
+     lambda root: count_in(root, "tests/conformance/CMakeLists.txt", r'^\s*"\d+\|',
+                           r"set\(_breaches.*?\)\n")),
+    ("broken_fuzz_ports", re.compile(COUNT + r"\s+broken\s+ports"),
+     lambda root: count_in(root, "tests/adopter-fuzz/CMakeLists.txt", r"^set\(_broken_[\w-]+\b")),
+)
 
 
 def conformance_requirements(root):
@@ -212,6 +249,9 @@ def find_claims(doc, text):
         spans.append((m.start(), m.end()))
         claims.append(Claim(doc, line_of(m.start()), "%s@%s" % (TEST_KEYS[m.group(3)], target),
                             number(m.group(1)), m.group(1) + " bytes"))
+    for key, form, _ in SOURCE_COUNTS:
+        for m in form.finditer(text):
+            claims.append(Claim(doc, line_of(m.start()), key, number(m.group(1)), m.group(0)))
     for m in REQUIREMENTS_FORM.finditer(text):
         if "conformance" in text[max(0, m.start() - 200):m.end() + 200].lower():
             spans.append((m.start(), m.end()))
@@ -291,6 +331,8 @@ def check(root, docs, measures, allow):
 def measure(args, root):
     m = Measures()
     m.set("conformance_requirements", conformance_requirements(root))
+    for key, _, count in SOURCE_COUNTS:
+        m.set(key, count(root))
     kind = args.build_kind
     for spec in args.probe:
         target, _, rest = spec.partition("=")
