@@ -5,6 +5,7 @@ environment CTest sets: DARAN_CLI (the tool), DARAN_SIM (daran-sim).
 stdlib only; run by /usr/bin/python3."""
 import os
 import pty
+import re
 import sys
 import select
 import subprocess
@@ -32,6 +33,20 @@ class Sim(can_pty_support.Sim):
         if not self.path.startswith("/dev/"):
             self.stop()
             raise RuntimeError("daran-sim printed no pty path: %r" % self.path)
+
+    def directive_taken(self, line, timeout=10):
+        """directive(line), and wait until daran-sim has taken it: `i 1`
+        typed after it (drive 1's own query) is answered on stdout only once
+        every line before it was."""
+        seen = len(self.console)
+        self.directive(line)
+        self.directive("i 1")
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if any(re.match(r"^\d+ \d+ \d+\s*$", l) for l in self.console[seen:]):
+                return
+            time.sleep(0.005)
+        raise AssertionError("daran-sim did not take %r within %s s" % (line, timeout))
 
     def __enter__(self):
         return self
