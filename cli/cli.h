@@ -19,7 +19,8 @@
 /** The exit statuses (docs/cli.md, "Exit status"). */
 typedef enum cli_status {
     CLI_OK = 0,          /**< done */
-    CLI_DRIVE_ERROR = 1, /**< a drive answered `error: …`, or refused what was asked */
+    CLI_DRIVE_ERROR = 1, /**< a drive answered `error: …` (not a gateway's `no reply`), or
+                              refused what was asked */
     CLI_USAGE = 2,       /**< the command line is wrong */
     CLI_NO_REPLY = 3,    /**< no (readable) reply in time */
     CLI_PORT_ERROR = 4   /**< the port could not be found, opened, read or written */

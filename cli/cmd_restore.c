@@ -180,10 +180,10 @@ static cli_status_t restore_compare(cli_session_t *s, restore_t *r)
                             r->name, e->line, r->id, e->path, daran_result_phrase(refused));
         }
         if (status != CLI_OK) {
-            return cli_fail(status, "%s:%u: %s; all %zu lines were written, each read back as "
-                            "written, but reading them again stopped there: what drive %u keeps "
-                            "from line %u on is unchecked", r->name, e->line, why, r->file.count,
-                            r->id, e->line);
+            return cli_fail(status, "%s:%u: %s; all %zu lines were written and read back, but "
+                            "reading them again stopped there: what drive %u keeps from line %u "
+                            "on is unchecked", r->name, e->line, why, r->file.count, r->id,
+                            e->line);
         }
         r->compared++;
         if (!cli_same_number(kept, e->value)) {

@@ -175,8 +175,8 @@ class Bridge(unittest.TestCase):
         self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
         self.assertIn("%s:%d: drive 3 did not answer \"r axis3.%s\"" %
                       (self.file, len(self.lines) + 1, CHANGED), r.stderr)
-        self.assertIn("all %d lines were written, each read back as written, but reading them "
-                      "again stopped there: what drive 3 keeps from line %d on is unchecked" %
+        self.assertIn("all %d lines were written and read back, but reading them again stopped "
+                      "there: what drive 3 keeps from line %d on is unchecked" %
                       (len(self.lines), len(self.lines) + 1), r.stderr)
         self.fault_before(self.nth("r axis3.%s" % CHANGED, 3), "!fault 3 can-lose 1")
         doc = json.loads(daran(self.port, "--json", "restore", 3, self.file).stdout)
