@@ -19,7 +19,8 @@
 /** The exit statuses (docs/cli.md, "Exit status"). */
 typedef enum cli_status {
     CLI_OK = 0,          /**< done */
-    CLI_DRIVE_ERROR = 1, /**< a drive answered `error: …`, or refused what was asked */
+    CLI_DRIVE_ERROR = 1, /**< a drive answered `error: …` (not a gateway's `no reply`), or
+                              refused what was asked */
     CLI_USAGE = 2,       /**< the command line is wrong */
     CLI_NO_REPLY = 3,    /**< no (readable) reply in time */
     CLI_PORT_ERROR = 4   /**< the port could not be found, opened, read or written */
@@ -81,12 +82,26 @@ cli_status_t cli_transact(cli_session_t *s, const daran_client_request_t *reques
                           daran_client_line_fn on_line, void *line_ctx, bool quiet,
                           daran_result_t *result);
 
+/** Room for one failure's text (cli_failure_text): a request, a port path
+ * and the words around them. */
+#define CLI_FAILURE_MAX 640u
+
+/** The failure of a request (status and result as cli_transact gave them)
+ * as one sentence in buf ("" for CLI_OK), for a caller that words its own
+ * message around it; nothing is reported. Returns the status, which is
+ * CLI_PORT_ERROR whenever the port failed. A gateway's `error: no reply` is
+ * told as such, apart from the link's own timeout. */
+cli_status_t cli_failure_text(cli_session_t *s, const daran_client_request_t *request,
+                              cli_status_t status, daran_result_t result, char *buf, size_t size);
+
 /** Report the failure of a request made with `quiet` (status and result as
  * cli_transact gave them) and return status. */
 cli_status_t cli_transact_failed(cli_session_t *s, const daran_client_request_t *request,
                                  cli_status_t status, daran_result_t result);
 
-/** The exit status for a link result (`drive_error`: the drive sent it). */
+/** The exit status for a link result (`drive_error`: the drive sent it).
+ * DARAN_ERR_NO_REPLY is CLI_NO_REPLY whoever said it: the link's timeout
+ * or a gateway's `error: no reply` (the drive behind it did not answer). */
 cli_status_t cli_status_of(daran_result_t result, bool drive_error);
 
 /** Print "daran: <message>" on stderr and return `status`. */
@@ -118,16 +133,29 @@ uint32_t cli_now_ms(void);
  * trip. CLI_OK: kept[] holds what the drive kept. CLI_DRIVE_ERROR: the
  * drive refused the write, *refused says why (nothing reported: the caller
  * words it; kept[] holds the value it still has when it could be read).
- * Other statuses are reported here. */
+ * Other statuses are reported here; when the write went out and only its
+ * read-back failed, the message says the write may have taken effect. */
 cli_status_t cli_write_read_back(cli_session_t *s, uint8_t id, const char *path,
                                  const daran_client_value_t *value, char *kept, size_t kept_size,
                                  daran_result_t *refused);
+
+/** What a write and its read-back came to. */
+typedef struct cli_read_back {
+    char kept[DARAN_CLIENT_LINE_MAX]; /**< the value read back; "" when none could be read */
+    daran_result_t refused;           /**< CLI_DRIVE_ERROR: the drive's answer to the write */
+    daran_result_t result;            /**< any other status: the link's result of the request
+                                           that failed (DARAN_ERR_NO_REPLY, a damaged reply's) */
+    char failure[CLI_FAILURE_MAX];    /**< any other status: what happened (nothing reported) */
+} cli_read_back_t;
+
 /** cli_write_read_back() with the scope given (a drive's own system-scope
- * row, which the tool's table does not know, needs SYSTEM). */
+ * row, which the tool's table does not know, needs SYSTEM), reporting
+ * nothing: the status, and *out says what happened. A failure other than a
+ * refusal (CLI_NO_REPLY after the write went out) means the write may have
+ * taken effect. */
 cli_status_t cli_write_read_back_scoped(cli_session_t *s, uint8_t id, const char *path,
                                         daran_client_scope_t scope,
-                                        const daran_client_value_t *value, char *kept,
-                                        size_t kept_size, daran_result_t *refused);
+                                        const daran_client_value_t *value, cli_read_back_t *out);
 
 /* ------------------------------------------------------------ args.c */
 

@@ -365,8 +365,8 @@ static cli_status_t send_one(cli_session_t *s, const char *text, size_t len, siz
             cli_json_member(stdout, "error", what);
         }
         putchar('}');
-    } else if (status == CLI_DRIVE_ERROR) {
-        printf("error: %s\n", daran_result_phrase(result));
+    } else if (outcome.drive_error) {
+        printf("error: %s\n", daran_result_phrase(result)); /* the line as it came */
     }
     switch (status) {
     case CLI_OK:
@@ -377,6 +377,10 @@ static cli_status_t send_one(cli_session_t *s, const char *text, size_t len, siz
     case CLI_PORT_ERROR:
         return s->port_failed ? cli_port_status(s) : cli_fail(status, "%s: cannot write", s->port_path);
     case CLI_NO_REPLY:
+        if (result == DARAN_ERR_NO_REPLY && outcome.drive_error) {
+            return cli_fail(status, "\"%.*s\": no reply: the gateway on %s answered \"error: no "
+                            "reply\"", (int)len, text, s->port_path);
+        }
         if (result == DARAN_ERR_NO_REPLY) {
             return cli_fail(status, "\"%.*s\": no reply within %u ms on %s", (int)len, text,
                             (unsigned)s->options.timeout_ms, s->port_path);

@@ -83,12 +83,12 @@ static void copy_field(char *dst, size_t size, const cli_field_t *field)
 
 /* `w PATH VALUE [ID]`: fields already split. */
 static cli_status_t read_write_line(const char *name, unsigned line, const cli_field_t *f,
-                                    size_t count, dump_entry_t *entry)
+                                    size_t count, uint8_t target, dump_entry_t *entry)
 {
     if (count < 3 || count > 4) {
         return cli_fail(CLI_USAGE, "%s:%u: a `w` line is `w PATH VALUE [ID]`", name, line);
     }
-    if (f[1].len >= sizeof entry->path || f[2].len >= sizeof entry->value) {
+    if (f[1].len >= CLI_PATH_MAX || f[2].len >= sizeof entry->value) {
         return cli_fail(CLI_USAGE, "%s:%u: path or value too long", name, line);
     }
     copy_field(entry->path, sizeof entry->path, &f[1]);
@@ -128,6 +128,18 @@ static cli_status_t read_write_line(const char *name, unsigned line, const cli_f
         return cli_fail(CLI_USAGE, "%s:%u: %s is never restored (%s)", name, line, entry->path,
                         why);
     }
+    if (entry->axis) {
+        /* the path the drive gets, so that every message names what was sent
+         * (path[] has room for an ID one digit longer than the file's N) */
+        char prefix[12];
+        int len = snprintf(prefix, sizeof prefix, "axis%u.", target);
+        const char *bare = dump_bare_path(entry->path);
+        if (len < 0 || (size_t)len + strlen(bare) >= sizeof entry->path) {
+            return cli_fail(CLI_USAGE, "%s:%u: path too long", name, line);
+        }
+        memmove(entry->path + len, bare, strlen(bare) + 1u);
+        memcpy(entry->path, prefix, (size_t)len);
+    }
     return CLI_OK;
 }
 
@@ -146,7 +158,7 @@ static void read_comment(const char *text, dump_file_t *out)
     }
 }
 
-cli_status_t dump_file_read(const char *name, dump_file_t *out)
+cli_status_t dump_file_read(const char *name, uint8_t id, dump_file_t *out)
 {
     out->count = 0;
     out->firmware[0] = '\0';
@@ -187,7 +199,7 @@ cli_status_t dump_file_read(const char *name, dump_file_t *out)
             status = cli_fail(CLI_USAGE, "%s:%u: more than %u `w` lines", name, line,
                               CLI_PROPERTIES_MAX);
         } else {
-            status = read_write_line(name, line, f, count, &out->entries[out->count]);
+            status = read_write_line(name, line, f, count, id, &out->entries[out->count]);
             if (status == CLI_OK) {
                 out->count++;
             }

@@ -28,7 +28,9 @@ const char *dump_bare_path(const char *path);
 
 /** One `w` line of a file. */
 typedef struct dump_entry {
-    char path[CLI_PATH_MAX];   /**< as written: `axisN.x`, or `x` (the id last) */
+    /** as sent to the drive restored: `axisID.x` (the file's axisN replaced;
+     * one more byte, for an ID of more digits), or `x` (the id last) */
+    char path[CLI_PATH_MAX + 1u];
     bool axis;                 /**< the path has an `axisN.` prefix */
     char value[DUMP_VALUE_MAX]; /**< the value as written */
     daran_client_value_t parsed;
@@ -42,9 +44,10 @@ typedef struct dump_file {
     char firmware[DUMP_VALUE_MAX]; /**< from the header; "" when it names none */
 } dump_file_t;
 
-/** Read `name` into *out. Anything but blank lines, comments and `w` lines
- * of configuration is refused with `name:line: what` (CLI_USAGE), as is a
- * file that cannot be read. */
-cli_status_t dump_file_read(const char *name, dump_file_t *out);
+/** Read `name` into *out, each path as it goes to drive `id` (a dump of
+ * drive 2 restored into drive 3 writes `axis3.`). Anything but blank lines,
+ * comments and `w` lines of configuration is refused with `name:line: what`
+ * (CLI_USAGE), as is a file that cannot be read. */
+cli_status_t dump_file_read(const char *name, uint8_t id, dump_file_t *out);
 
 #endif /* DARAN_CLI_DUMP_FILE_H */

@@ -144,6 +144,11 @@ cli_status_t cli_status_of(daran_result_t result, bool drive_error)
     if (result == DARAN_OK) {
         return CLI_OK;
     }
+    /* A gateway's `error: no reply` (can.md C32) is the addressed drive's
+     * silence, told sooner than the timeout: not an answer from that drive. */
+    if (result == DARAN_ERR_NO_REPLY) {
+        return CLI_NO_REPLY;
+    }
     if (drive_error) {
         return CLI_DRIVE_ERROR;
     }
@@ -189,38 +194,67 @@ cli_status_t cli_port_status(cli_session_t *s)
                     s->port_what != NULL ? s->port_what : "i/o", strerror(s->port_errno));
 }
 
-cli_status_t cli_transact_failed(cli_session_t *s, const daran_client_request_t *request,
-                                 cli_status_t status, daran_result_t result)
+/* Whether the reply the link took last is a gateway's `error: no reply`
+ * (the link keeps an error line as its last reply line; a timeout leaves
+ * none, or a partial reply's text). */
+static bool gateway_said_no_reply(const cli_session_t *s)
+{
+    char line[DARAN_CLIENT_LINE_MAX];
+    int len = snprintf(line, sizeof line, "error: %s", daran_result_phrase(DARAN_ERR_NO_REPLY));
+    return len > 0 && s->link.last_len == (size_t)len &&
+           memcmp(s->link.last, line, s->link.last_len) == 0;
+}
+
+cli_status_t cli_failure_text(cli_session_t *s, const daran_client_request_t *request,
+                              cli_status_t status, daran_result_t result, char *buf, size_t size)
 {
     char text[DARAN_CLIENT_LINE_MAX];
     (void)cli_request_text(request, text, sizeof text);
+    buf[0] = '\0';
     if (s->port_failed) {
-        return cli_fail(CLI_PORT_ERROR, "%s: %s failed: %s (during \"%s\" to drive %u)",
-                        s->port_path, s->port_what != NULL ? s->port_what : "i/o",
-                        strerror(s->port_errno), text, request->id);
+        (void)snprintf(buf, size, "%s: %s failed: %s (during \"%s\" to drive %u)", s->port_path,
+                       s->port_what != NULL ? s->port_what : "i/o", strerror(s->port_errno),
+                       text, request->id);
+        return CLI_PORT_ERROR;
     }
     switch (status) {
     case CLI_OK:
-        return CLI_OK;
+        break;
     case CLI_DRIVE_ERROR:
-        return cli_fail(status, "drive %u refused \"%s\": %s", request->id, text,
-                        daran_result_phrase(result));
+        (void)snprintf(buf, size, "drive %u refused \"%s\": %s", request->id, text,
+                       daran_result_phrase(result));
+        break;
     case CLI_NO_REPLY:
         if (cli_interrupted()) {
-            return cli_fail(status, "interrupted while waiting for \"%s\"", text);
+            (void)snprintf(buf, size, "interrupted while waiting for \"%s\"", text);
+        } else if (result == DARAN_ERR_NO_REPLY && gateway_said_no_reply(s)) {
+            (void)snprintf(buf, size, "drive %u did not answer \"%s\": the gateway on %s "
+                           "answered \"error: no reply\"", request->id, text, s->port_path);
+        } else if (result == DARAN_ERR_NO_REPLY) {
+            (void)snprintf(buf, size, "drive %u did not answer \"%s\" within %u ms on %s",
+                           request->id, text, (unsigned)s->options.timeout_ms, s->port_path);
+        } else {
+            (void)snprintf(buf, size, "drive %u's reply to \"%s\" on %s was damaged: %s",
+                           request->id, text, s->port_path, damage_of(result));
         }
-        if (result == DARAN_ERR_NO_REPLY) {
-            return cli_fail(status, "drive %u did not answer \"%s\" within %u ms on %s",
-                            request->id, text, (unsigned)s->options.timeout_ms, s->port_path);
-        }
-        return cli_fail(status, "drive %u's reply to \"%s\" on %s was damaged: %s", request->id,
-                        text, s->port_path, damage_of(result));
+        break;
     case CLI_PORT_ERROR:
-        return cli_fail(status, "%s: cannot write \"%s\"", s->port_path, text);
+        (void)snprintf(buf, size, "%s: cannot write \"%s\"", s->port_path, text);
+        break;
     default:
-        return cli_fail(status, "cannot build the request \"%s\": %s", text,
-                        daran_result_phrase(result));
+        (void)snprintf(buf, size, "cannot build the request \"%s\": %s", text,
+                       daran_result_phrase(result));
+        break;
     }
+    return status;
+}
+
+cli_status_t cli_transact_failed(cli_session_t *s, const daran_client_request_t *request,
+                                 cli_status_t status, daran_result_t result)
+{
+    char why[CLI_FAILURE_MAX];
+    status = cli_failure_text(s, request, status, result, why, sizeof why);
+    return status == CLI_OK ? CLI_OK : cli_fail(status, "%s", why);
 }
 
 cli_status_t cli_transact(cli_session_t *s, const daran_client_request_t *request,

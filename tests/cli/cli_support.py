@@ -5,6 +5,7 @@ environment CTest sets: DARAN_CLI (the tool), DARAN_SIM (daran-sim).
 stdlib only; run by /usr/bin/python3."""
 import os
 import pty
+import re
 import sys
 import select
 import subprocess
@@ -33,6 +34,20 @@ class Sim(can_pty_support.Sim):
             self.stop()
             raise RuntimeError("daran-sim printed no pty path: %r" % self.path)
 
+    def directive_taken(self, line, timeout=10):
+        """directive(line), and wait until daran-sim has taken it: `i 1`
+        typed after it (drive 1's own query) is answered on stdout only once
+        every line before it was."""
+        seen = len(self.console)
+        self.directive(line)
+        self.directive("i 1")
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if any(re.match(r"^\d+ \d+ \d+\s*$", l) for l in self.console[seen:]):
+                return
+            time.sleep(0.005)
+        raise AssertionError("daran-sim did not take %r within %s s" % (line, timeout))
+
     def __enter__(self):
         return self
 
@@ -53,10 +68,13 @@ def daran(port, *args, stdin=None, timeout=60, env=None):
 
 class Proxy:
     """A pseudo-terminal of our own between `daran` and the drive's: .path
-    is what daran opens. Bytes flow both ways; `cut_after(n)` lets n more
-    bytes of the drive's side through, then closes daran's side (the link
-    drops mid-reply); `drop_replies()` stops passing the drive's bytes
-    (a drive that went silent)."""
+    is what daran opens. Bytes flow both ways, daran's a whole line at a
+    time; `cut_after(n)` lets n more bytes of the drive's side through, then
+    closes daran's side (the link drops mid-reply); `drop_replies()` stops
+    passing the drive's bytes (a drive that went silent); `before_line(
+    matches, action)` calls action() before passing on the first line of
+    daran's for which matches(text) is true (a fault at an exact request;
+    matches None: none)."""
 
     def __init__(self, drive_path):
         self.master, slave = pty.openpty()
@@ -67,6 +85,8 @@ class Proxy:
         tty.setraw(self.drive)
         self.budget = None
         self.silent = False
+        self._hook = None
+        self._pending = b""
         self.closed = False
         self._stop = False
         self.thread = threading.Thread(target=self._run, daemon=True)
@@ -78,6 +98,19 @@ class Proxy:
     def drop_replies(self):
         self.silent = True
 
+    def before_line(self, matches, action):
+        self._hook = (matches, action) if matches is not None else None
+
+    def _pass_lines(self, data):
+        self._pending += data
+        *lines, self._pending = self._pending.split(b"\n")
+        for line in lines:
+            hook = self._hook
+            if hook is not None and hook[0](line.decode("ascii", "replace")):
+                self._hook = None
+                hook[1]()
+            os.write(self.drive, line + b"\n")
+
     def _run(self):
         while not self._stop and not self.closed:
             ready, _, _ = select.select([self.master, self.drive], [], [], 0.05)
@@ -87,7 +120,7 @@ class Proxy:
                 except OSError:
                     continue
                 if fd == self.master:
-                    os.write(self.drive, data)
+                    self._pass_lines(data)
                     continue
                 if self.silent:
                     continue

@@ -220,6 +220,27 @@ class DumpRestore(unittest.TestCase):
                                                "path": "axis3.output_shaft.trap_traj_vel_limit"}])
         self.run_ok("restore", 3, original)
 
+    def test_paths_are_named_as_sent(self):
+        # drive 2's lines restored into drive 3: every message names axis3., the path sent
+        original, _ = self.dump(3, "as-sent-before.txt")
+        firmware = self.run_ok("send", "i 3").stdout.split()[0]
+        head = "# firmware %s, hardware 3, serial number 1\n" % firmware
+        views = self.file("as-sent-views.txt", head +
+                          "w axis2.output_shaft.trap_traj_vel_limit 300\n"
+                          "w axis2.trap_traj.config.vel_limit 10\n")
+        doc = json.loads(self.run_ok("--json", "restore", 3, views).stdout)
+        self.assertEqual([d["path"] for d in doc["differences"]],
+                         ["axis3.output_shaft.trap_traj_vel_limit"])
+        self.assertIn(":2: axis3.output_shaft.trap_traj_vel_limit: drive 3 keeps 600",
+                      self.run_ok("restore", 3, views).stdout)
+        refused = self.file("as-sent-refused.txt", head + "w axis2.output_shaft.vel_limit 450\n"
+                            "w axis2.motor.config.current_lim -5\n")
+        r = daran(self.port, "--json", "restore", 3, refused)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertEqual(json.loads(r.stdout)["failed"]["path"], "axis3.motor.config.current_lim")
+        self.assertNotIn("axis2.", r.stdout + r.stderr)
+        self.run_ok("restore", 3, original)
+
     def test_file_errors_before_the_port_is_opened(self):
         header = "# firmware 100, hardware 3, serial number 1\n"
         cases = [
