@@ -596,11 +596,21 @@ static daran_result_t cmd_mq(baseline_t *b, const bl_command_t *cmd, char tok[][
         float v = 2.0f * a * d / (at + sqrtf(disc));
         move.vel_rpm = v / 6.0f;
         move.rate = a / 6.0f;
-    } else if (-disc <= 1e-4f * at * at) {
+    } else {
+        /* protocol.md 10.5: the time is kept, within the velocity limit
+         * unless the duration is the least one pushed a hair short */
         move.vel_rpm = 2.0f * d / t / 6.0f;
         move.rate = ramps * d / (t * t) / 6.0f;
-    } else {
-        return DARAN_ERR_TRAJECTORY_INFEASIBLE;
+        if (-disc > 1e-4f * at * at) {
+            daran_value_t limit;
+            result = get(b, DARAN_PROP_SHAFT_VEL_LIMIT, &limit);
+            if (result == DARAN_OK && 2.0f * d / t > limit.f32 * 6.0f) {
+                result = DARAN_ERR_TRAJECTORY_INFEASIBLE;
+            }
+            if (result != DARAN_OK && result != DARAN_ERR_INVALID_PROPERTY) {
+                return result;
+            }
+        }
     }
     return finish_start(b, &move);
 }

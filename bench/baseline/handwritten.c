@@ -731,12 +731,22 @@ static daran_result_t timed(handwritten_t *h, float d, float t, float a, daran_m
         m->rate = a / 6.0f;
         return DARAN_OK;
     }
+    /* protocol.md 10.5: the time is kept, within the velocity limit unless
+     * the duration is the least one pushed a hair short */
+    m->vel_rpm = 2.0f * d / t / 6.0f;
+    m->rate = ramps * d / (t * t) / 6.0f;
     if (-disc <= 1e-4f * at * at) {
-        m->vel_rpm = 2.0f * d / t / 6.0f;
-        m->rate = ramps * d / (t * t) / 6.0f;
         return DARAN_OK;
     }
-    return DARAN_ERR_TRAJECTORY_INFEASIBLE;
+    daran_value_t limit;
+    result = get(h, DARAN_PROP_SHAFT_VEL_LIMIT, &limit);
+    if (result == DARAN_ERR_INVALID_PROPERTY) {
+        return DARAN_OK;
+    }
+    if (result == DARAN_OK && 2.0f * d / t > limit.f32 * 6.0f) {
+        result = DARAN_ERR_TRAJECTORY_INFEASIBLE;
+    }
+    return result;
 }
 
 static daran_result_t command_start(handwritten_t *h, const line_t *l, int command,

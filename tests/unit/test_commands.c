@@ -400,6 +400,19 @@ static void test_mq_short_of_its_acceleration_keeps_the_time(void)
     check_timed_move(m, mv, 10, 80, 2.3f, 10, __LINE__);
 }
 
+/* A port without a velocity limit keeps any time: a duration whose square
+ * overflows leaves the triangle's acceleration 0, and the move goes as a
+ * step with nothing given, never as a trapezoid with a rate of 0. */
+static void test_mq_whose_triangle_acceleration_underflows_is_a_step(void)
+{
+    SKIP_IF_NO_MULTI();
+    mock_t *m = mock_new();
+    ASSERT_SILENT(m, "ms 1 1e30 1e20 1e-11");
+    mock_fail(m, MOCK_FAIL_GET, 1, DARAN_ERR_INVALID_PROPERTY, DARAN_PROP_SHAFT_VEL_LIMIT);
+    const daran_move_t *mv = ASSERT_MOVE(m, "mq 1 0");
+    ASSERT_MOVE_EQUALS(m, mv, {Q, 0, 1e30f, 0, 0, 0, 0, 0});
+}
+
 /* Only a peak beyond output_shaft.vel_limit is refused, with no motion and
  * the preset kept (D16); a peak at the limit runs. */
 static void test_mq_beyond_the_velocity_limit_is_refused_at_it_runs(void)
@@ -1159,6 +1172,7 @@ int main(void)
     ADD(test_mq_short_of_its_acceleration_keeps_the_time);
     ADD(test_mq_beyond_the_velocity_limit_is_refused_at_it_runs);
     ADD(test_mq_velocity_limit_read_through_the_hal);
+    ADD(test_mq_whose_triangle_acceleration_underflows_is_a_step);
     ADD(test_mq_within_the_1e4_shortfall_runs_the_exact_triangle);
     ADD(test_mq_with_the_vendor_17_digit_minimum_duration_is_accepted);
     ADD(test_mq_with_zero_distance_is_accepted);
