@@ -1,16 +1,24 @@
 /** @file daran_build.h
- * The build signature: one 32-bit number that changes with everything in
- * the options header that the library and a program using it must agree on:
- * the property table (every row's id, path length, type, access, scope,
- * range and unit length; the rows left out by DARAN_OMIT_PROPERTIES and by
- * the CMake list DARAN_PROPERTY_OMIT), the range texts, and the options that
- * change behaviour without changing sizeof(daran_drive_t).
+ * The build check: what the library and a program using it must agree on,
+ * computed by each from the headers it was compiled with.
  *
- * It is a constant expression of the headers alone, so the library computes
- * it when it is compiled and a program when it is: daran_init() passes the
- * program's value and the library refuses an instance whose value differs
- * from its own (DARAN_ERR_BUILD_MISMATCH), instead of running with
- * property ids or options that mean something else to it. */
+ * DARAN_BUILD_SIGNATURE is a constant expression: the property table (every
+ * row's id, path length, type, access, scope, range and unit length; the
+ * rows left out by DARAN_OMIT_PROPERTIES and by the CMake list
+ * DARAN_PROPERTY_OMIT), the range texts' lengths, and the options that
+ * change behaviour without changing an instance's size (the CAN options
+ * among them). A string's characters cannot be read in a C constant
+ * expression, so daran_port_table_hash() hashes the texts of the port's own
+ * rows and ranges (DARAN_PORT_PROPERTY_LIST, DARAN_PORT_RANGE_LIST: the
+ * part of the table an options header writes) when it runs; without them it
+ * is a constant too.
+ *
+ * daran_init(), daran_can_init() and daran_can_bridge_init() pass the
+ * program's DARAN_BUILD_CHECK() of the instance type, and the library
+ * refuses an instance whose check differs from its own
+ * (DARAN_ERR_BUILD_MISMATCH) before touching it, instead of running with
+ * property ids, ranges, options or a layout that mean something else to
+ * it. */
 #ifndef DARAN_BUILD_H
 #define DARAN_BUILD_H
 
@@ -66,6 +74,49 @@
      (uint32_t)DARAN_MOTOR_ID_MAX << 8 ^ (uint32_t)DARAN_REPLY_CRLF << 4 ^                     \
      (uint32_t)DARAN_ENABLE_HELP << 5 ^ (uint32_t)DARAN_ENABLE_MULTI_MOTOR << 6 ^               \
      (uint32_t)DARAN_ENABLE_DISCOVERY << 7 ^ (uint32_t)DARAN_ENABLE_TELEMETRY << 16 ^            \
-     (uint32_t)DARAN_ENABLE_PORT_COMMANDS << 17 ^ (uint32_t)DARAN_ENABLE_S_CURVE << 18)
+     (uint32_t)DARAN_ENABLE_PORT_COMMANDS << 17 ^ (uint32_t)DARAN_ENABLE_S_CURVE << 18 ^          \
+     (uint32_t)DARAN_ENABLE_CAN << 19 ^ (uint32_t)DARAN_ENABLE_CAN_BRIDGE << 20 ^                 \
+     (uint32_t)DARAN_CAN_RX_FRAMES * 0x27D4EB2Fu ^ (uint32_t)DARAN_CAN_BRIDGE_TIMEOUT_MS * 0x165667B1u)
+
+/** @cond INTERNAL */
+/* A port row as text: what it means, its path, range and unit as written. */
+#define DARAN_SIG_ROW_TEXT_(id, path, scope, type, access, range, unit, can) \
+    #id "\n" path "\n" #scope " " #type " " #access " " #range "\n" unit "\n" #can "\n"
+#define DARAN_SIG_RANGE_TEXT_(name, text) #name "\n" text "\n"
+#ifdef DARAN_PORT_PROPERTY_LIST
+#define DARAN_SIG_PORT_ROW_TEXTS_ DARAN_PORT_PROPERTY_LIST(DARAN_SIG_ROW_TEXT_)
+#else
+#define DARAN_SIG_PORT_ROW_TEXTS_
+#endif
+#ifdef DARAN_PORT_RANGE_LIST
+#define DARAN_SIG_PORT_RANGE_TEXTS_ DARAN_PORT_RANGE_LIST(DARAN_SIG_RANGE_TEXT_)
+#else
+#define DARAN_SIG_PORT_RANGE_TEXTS_
+#endif
+/** @endcond */
+
+/** FNV-1a of the texts of the port's rows and ranges, as this file is
+ * compiled: each row's id, path, scope, type, access, range name, unit and
+ * CAN address, and each range's name and text, in table order (so two rows
+ * of the same shape swapped, or a range with other bounds, change it).
+ * One string literal, so a program and a library that agree share it in
+ * the linked image. A build without port rows or ranges pays nothing: the
+ * value is then a constant. */
+static inline uint32_t daran_port_table_hash(void)
+{
+    uint32_t hash = 2166136261u;
+    for (const char *c = "" DARAN_SIG_PORT_ROW_TEXTS_ DARAN_SIG_PORT_RANGE_TEXTS_; *c != '\0';
+         c++) {
+        hash = (hash ^ (uint8_t)*c) * 16777619u;
+    }
+    return hash;
+}
+
+/** What an init function of the library compares for an instance of type
+ * @p instance_type (daran_drive_t, daran_can_t, daran_can_bridge_t): the
+ * build signature, the port's table texts and the instance's size, as the
+ * caller was compiled. */
+#define DARAN_BUILD_CHECK(instance_type)                                                     \
+    (DARAN_BUILD_SIGNATURE ^ daran_port_table_hash() ^ (uint32_t)sizeof(instance_type))
 
 #endif /* DARAN_BUILD_H */

@@ -24,10 +24,14 @@ enum answer {
     ANSWER_TRAPEZOID  /* q with omitted values: nothing; the move goes out */
 };
 
-daran_result_t daran_can_bridge_init(daran_can_bridge_t *bridge, daran_can_t *can)
+daran_result_t daran_can_bridge_init_checked(daran_can_bridge_t *bridge, daran_can_t *can,
+                                             uint32_t build_check)
 {
     if (bridge == NULL || can == NULL || can->drive == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
+    }
+    if (build_check != DARAN_BUILD_CHECK(daran_can_bridge_t)) {
+        return DARAN_ERR_BUILD_MISMATCH;
     }
     /* nothing pending; every other member is written before it is read */
     bridge->count = 0;
