@@ -3,15 +3,15 @@
  * computed by each from the headers it was compiled with.
  *
  * DARAN_BUILD_SIGNATURE is a constant expression: the property table (every
- * row's id, path length, type, access, scope, range and unit length; the
- * rows left out by DARAN_OMIT_PROPERTIES and by the CMake list
+ * row's id, path length, type, access, scope, range, unit length and CAN
+ * address; the rows left out by DARAN_OMIT_PROPERTIES and by the CMake list
  * DARAN_PROPERTY_OMIT), the range texts' lengths, and the options that
  * change behaviour without changing an instance's size (the CAN options
  * among them). A string's characters cannot be read in a C constant
  * expression, so daran_port_table_hash() hashes the texts of the port's own
- * rows and ranges (DARAN_PORT_PROPERTY_LIST, DARAN_PORT_RANGE_LIST: the
- * part of the table an options header writes) when it runs; without them it
- * is a constant too.
+ * rows and ranges (DARAN_PORT_PROPERTY_LIST, DARAN_PORT_RANGE_LIST: the part
+ * of the table an options header writes) when it runs; the vendor's rows
+ * and ranges are this library's own headers, the same text on both sides.
  *
  * daran_init(), daran_can_init() and daran_can_bridge_init() pass the
  * program's DARAN_BUILD_CHECK() of the instance type, and the library
@@ -79,10 +79,11 @@
      (uint32_t)DARAN_CAN_RX_FRAMES * 0x27D4EB2Fu ^ (uint32_t)DARAN_CAN_BRIDGE_TIMEOUT_MS * 0x165667B1u)
 
 /** @cond INTERNAL */
-/* A port row as text: what it means, its path, range and unit as written. */
-#define DARAN_SIG_ROW_TEXT_(id, path, scope, type, access, range, unit, can) \
-    #id "\n" path "\n" #scope " " #type " " #access " " #range "\n" unit "\n" #can "\n"
-#define DARAN_SIG_RANGE_TEXT_(name, text) #name "\n" text "\n"
+/* The texts of a port row and a port range. Their ids, types, access,
+ * scopes, range numbers, CAN addresses and the texts' lengths are in the
+ * signature above; here are the characters it cannot read. */
+#define DARAN_SIG_ROW_TEXT_(id, path, scope, type, access, range, unit, can) path "\n" unit "\n"
+#define DARAN_SIG_RANGE_TEXT_(name, text) text "\n"
 #ifdef DARAN_PORT_PROPERTY_LIST
 #define DARAN_SIG_PORT_ROW_TEXTS_ DARAN_PORT_PROPERTY_LIST(DARAN_SIG_ROW_TEXT_)
 #else
@@ -95,13 +96,12 @@
 #endif
 /** @endcond */
 
-/** FNV-1a of the texts of the port's rows and ranges, as this file is
- * compiled: each row's id, path, scope, type, access, range name, unit and
- * CAN address, and each range's name and text, in table order (so two rows
- * of the same shape swapped, or a range with other bounds, change it).
- * One string literal, so a program and a library that agree share it in
- * the linked image. A build without port rows or ranges pays nothing: the
- * value is then a constant. */
+/** FNV-1a of the texts of the port's own rows and ranges as this file is
+ * compiled: each row's path and unit, then each range's text, in table
+ * order, so two rows of the same shape swapped, a range of the same length
+ * with other bounds, or a path or unit spelt otherwise change it. One string
+ * literal: a program and a library that agree share it in the linked image.
+ * Without port rows or ranges it is a constant, and costs nothing. */
 static inline uint32_t daran_port_table_hash(void)
 {
     uint32_t hash = 2166136261u;

@@ -27,11 +27,13 @@ enum answer {
 daran_result_t daran_can_bridge_init_checked(daran_can_bridge_t *bridge, daran_can_t *can,
                                              uint32_t build_check)
 {
-    if (bridge == NULL || can == NULL || can->drive == NULL) {
-        return DARAN_ERR_BAD_ARGUMENT;
-    }
+    /* first: a caller of another build may pass a front end it could not
+     * initialise, whose drive is still NULL */
     if (build_check != DARAN_BUILD_CHECK(daran_can_bridge_t)) {
         return DARAN_ERR_BUILD_MISMATCH;
+    }
+    if (bridge == NULL || can == NULL || can->drive == NULL) {
+        return DARAN_ERR_BAD_ARGUMENT;
     }
     /* nothing pending; every other member is written before it is read */
     bridge->count = 0;

@@ -87,6 +87,12 @@ static void test_every_instance_is_refused_untouched(void)
                           daran_can_bridge_init(&bridge_box.bridge, &can_box.can));
     assert_filled(&bridge_box, 0, sizeof bridge_box, "the refused bridge was written");
     assert_filled(&can_box, 0, sizeof can_box, "the refused bridge wrote its front end");
+    /* a static front end whose daran_can_init() was refused is all zeros:
+     * the mismatch, not a missing drive, is what the bridge reports */
+    memset(&can_box.can, 0, sizeof can_box.can);
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BUILD_MISMATCH,
+                          daran_can_bridge_init(&bridge_box.bridge, &can_box.can));
+    assert_filled(&bridge_box, 0, sizeof bridge_box, "the refused bridge was written");
 }
 
 #else
