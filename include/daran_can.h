@@ -93,9 +93,20 @@ typedef struct daran_can {
  * front end silent (it takes frames and drops them) until the next
  * daran_can_init(), as a drive reads it at boot (C15).
  * Returns DARAN_ERR_BAD_ARGUMENT when a pointer or port->send / now_ms is
- * NULL. O(sizeof *can). */
-DARAN_NODISCARD daran_result_t daran_can_init(daran_can_t *can, daran_drive_t *drive,
-                                              const daran_can_port_t *port, void *port_ctx);
+ * NULL, and DARAN_ERR_BUILD_MISMATCH when the caller was compiled with
+ * other options (another DARAN_CAN_RX_FRAMES, say) or another property table
+ * than the library: the instance is then untouched and unusable.
+ * O(sizeof *can). */
+#define daran_can_init(can, drive, port, port_ctx)                                          \
+    daran_can_init_checked((can), (drive), (port), (port_ctx), DARAN_BUILD_CHECK(daran_can_t))
+
+/** What daran_can_init() calls, with the caller's
+ * DARAN_BUILD_CHECK(daran_can_t) (daran_build.h): the library's ring has
+ * its own DARAN_CAN_RX_FRAMES slots, so an instance laid out by another
+ * build would be written past its end. */
+DARAN_NODISCARD daran_result_t daran_can_init_checked(daran_can_t *can, daran_drive_t *drive,
+                                                      const daran_can_port_t *port,
+                                                      void *port_ctx, uint32_t build_check);
 
 /** Producer side: queue one received frame. Safe in an interrupt (one
  * producer). Frames that are not 8-byte standard data frames are dropped
@@ -155,8 +166,17 @@ typedef struct daran_can_bridge {
  * replies arrive through daran_can_poll(). A broadcast line that is not a
  * read goes out as node-0 frames, then runs here (C34). Lines for other ids
  * no longer reach the forward hook. Returns DARAN_ERR_BAD_ARGUMENT for a
- * NULL pointer or a front end without a drive. O(1). */
-DARAN_NODISCARD daran_result_t daran_can_bridge_init(daran_can_bridge_t *bridge, daran_can_t *can);
+ * NULL pointer or a front end without a drive, and DARAN_ERR_BUILD_MISMATCH
+ * (nothing touched) for a caller compiled with other options or another
+ * property table than the library. O(1). */
+#define daran_can_bridge_init(bridge, can)                                                  \
+    daran_can_bridge_init_checked((bridge), (can), DARAN_BUILD_CHECK(daran_can_bridge_t))
+
+/** What daran_can_bridge_init() calls, with the caller's
+ * DARAN_BUILD_CHECK(daran_can_bridge_t) (daran_build.h). */
+DARAN_NODISCARD daran_result_t daran_can_bridge_init_checked(daran_can_bridge_t *bridge,
+                                                             daran_can_t *can,
+                                                             uint32_t build_check);
 
 /** Whether a bridged query is waiting for its replies. O(1). */
 bool daran_can_bridge_busy(const daran_can_bridge_t *bridge);

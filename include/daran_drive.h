@@ -124,16 +124,15 @@ typedef struct daran_drive {
  * options or another property table than the library (see
  * daran_init_checked()); the instance is then unusable. */
 #define daran_init(drive, hal, hal_ctx, write, write_ctx)                                  \
-    daran_init_checked((drive), DARAN_BUILD_SIGNATURE ^ (uint32_t)sizeof(daran_drive_t),   \
-                       (hal), (hal_ctx), (write), (write_ctx))
+    daran_init_checked((drive), DARAN_BUILD_CHECK(daran_drive_t), (hal), (hal_ctx),        \
+                       (write), (write_ctx))
 
-/** What daran_init() calls, with the caller's DARAN_BUILD_SIGNATURE
- * (daran_build.h) mixed with its sizeof(daran_drive_t): a program compiled
- * with another options header than the library (other DARAN_LINE_MAX, its
- * own property rows or omissions, other options) would otherwise corrupt
- * memory or send property ids that mean other properties to the library;
- * here it gets DARAN_ERR_BUILD_MISMATCH instead, before anything is
- * touched. */
+/** What daran_init() calls, with the caller's DARAN_BUILD_CHECK(daran_drive_t)
+ * (daran_build.h): a program compiled with another options header than the
+ * library (other DARAN_LINE_MAX, its own property rows or ranges, omissions,
+ * other options) would otherwise corrupt memory or send property ids that
+ * mean other properties to the library; here it gets
+ * DARAN_ERR_BUILD_MISMATCH instead, before anything is touched. */
 DARAN_NODISCARD daran_result_t daran_init_checked(daran_drive_t *drive, uint32_t build_check,
                                                   const daran_hal_t *hal, void *hal_ctx,
                                                   daran_write_fn write, void *write_ctx);

@@ -397,12 +397,16 @@ static void run_frame(daran_can_t *can, const daran_can_slot_t *frame, uint32_t 
 
 /* ---- the front end ---- */
 
-daran_result_t daran_can_init(daran_can_t *can, daran_drive_t *drive, const daran_can_port_t *port,
-                              void *port_ctx)
+daran_result_t daran_can_init_checked(daran_can_t *can, daran_drive_t *drive,
+                                      const daran_can_port_t *port, void *port_ctx,
+                                      uint32_t build_check)
 {
     if (can == NULL || drive == NULL || port == NULL || port->send == NULL ||
         port->now_ms == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
+    }
+    if (build_check != DARAN_BUILD_CHECK(daran_can_t)) {
+        return DARAN_ERR_BUILD_MISMATCH;
     }
     /* every member but the slots, which the producer fills before use */
     unsigned char *raw = (unsigned char *)can;

@@ -24,8 +24,14 @@ enum answer {
     ANSWER_TRAPEZOID  /* q with omitted values: nothing; the move goes out */
 };
 
-daran_result_t daran_can_bridge_init(daran_can_bridge_t *bridge, daran_can_t *can)
+daran_result_t daran_can_bridge_init_checked(daran_can_bridge_t *bridge, daran_can_t *can,
+                                             uint32_t build_check)
 {
+    /* first: a caller of another build may pass a front end it could not
+     * initialise, whose drive is still NULL */
+    if (build_check != DARAN_BUILD_CHECK(daran_can_bridge_t)) {
+        return DARAN_ERR_BUILD_MISMATCH;
+    }
     if (bridge == NULL || can == NULL || can->drive == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }

@@ -25,8 +25,7 @@ daran_result_t daran_init_checked(daran_drive_t *drive, uint32_t build_check,
         hal->move == NULL || hal->action == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
-    /* the caller's signature and instance size, as daran_init() mixes them */
-    if (build_check != (DARAN_BUILD_SIGNATURE ^ (uint32_t)sizeof *drive)) {
+    if (build_check != DARAN_BUILD_CHECK(daran_drive_t)) {
         return DARAN_ERR_BUILD_MISMATCH;
     }
     unsigned char *raw = (unsigned char *)drive;

@@ -114,12 +114,13 @@ static void test_an_instance_of_another_size_is_refused(void)
     /* What a caller compiled with other DARAN_* size options would pass. */
     TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BUILD_MISMATCH,
                             daran_init_checked(&fixture.drive,
-                                               DARAN_BUILD_SIGNATURE ^ (uint32_t)(sizeof(daran_drive_t) - 4u),
+                                               DARAN_BUILD_CHECK(daran_drive_t) ^ (uint32_t)sizeof(daran_drive_t) ^
+                                                   (uint32_t)(sizeof(daran_drive_t) - 4u),
                                                &minimal_hal, &fixture.axis,
                                                write_line, &fixture.link));
     TEST_ASSERT_EQUAL_INT64(DARAN_OK,
                             daran_init_checked(&fixture.drive,
-                                               DARAN_BUILD_SIGNATURE ^ (uint32_t)sizeof(daran_drive_t),
+                                               DARAN_BUILD_CHECK(daran_drive_t),
                                                &minimal_hal, &fixture.axis,
                                                write_line, &fixture.link));
 }
@@ -130,7 +131,7 @@ static void test_a_program_with_another_property_table_is_refused(void)
      * omission, another option) would pass: the same size, another table. */
     TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BUILD_MISMATCH,
                             daran_init_checked(&fixture.drive,
-                                               DARAN_BUILD_SIGNATURE ^ (uint32_t)sizeof(daran_drive_t) ^ 1u,
+                                               DARAN_BUILD_CHECK(daran_drive_t) ^ 1u,
                                                &minimal_hal,
                                                &fixture.axis, write_line, &fixture.link));
     TEST_ASSERT_EQUAL_STRING("build mismatch", daran_result_phrase(DARAN_ERR_BUILD_MISMATCH));
