@@ -48,7 +48,7 @@ extern "C" {
  * | DARAN_ERR_MOTOR_FAULT | motor fault |
  * | DARAN_ERR_MOTOR_IDLE | motor idle |
  * | DARAN_ERR_BAD_ARGUMENT | bad argument: a NULL pointer or a bad table given to the API |
- * | DARAN_ERR_BUILD_MISMATCH | build mismatch: daran_init() of a program built with another options header |
+ * | DARAN_ERR_BUILD_MISMATCH | build mismatch: daran_init(), daran_can_init() or daran_can_bridge_init() of a program built with another options header or property table |
  */
 #define DARAN_RESULT_LIST(X) \
     X(OK,                        "ok") \
