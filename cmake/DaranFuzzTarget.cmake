@@ -88,14 +88,24 @@ function(_daran_fuzz_core_copy copy core)
 endfunction()
 
 function(daran_ascii_add_fuzz_target name)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "LIBRARY;SECONDS;TIMEOUT"
+  _daran_add_fuzz_target(daran_ascii_add_fuzz_target LINES ${name} ${ARGN})
+endfunction()
+
+function(daran_ascii_add_can_fuzz_target name)
+  _daran_add_fuzz_target(daran_ascii_add_can_fuzz_target FRAMES ${name} ${ARGN})
+endfunction()
+
+# <function> <LINES or FRAMES> <name> <arguments of the function>
+function(_daran_add_fuzz_target function input name)
+  set(_caller "${function}(${name})")
+  cmake_parse_arguments(PARSE_ARGV 3 arg "" "LIBRARY;SECONDS;TIMEOUT"
                         "SOURCES;INCLUDE_DIRECTORIES;CORPUS")
   if(arg_UNPARSED_ARGUMENTS)
-    message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): unknown arguments ${arg_UNPARSED_ARGUMENTS}")
+    message(FATAL_ERROR "${_caller}: unknown arguments ${arg_UNPARSED_ARGUMENTS}")
   endif()
-  _daran_check_core("daran_ascii_add_fuzz_target(${name})" "${arg_LIBRARY}")
+  _daran_check_core("${_caller}" "${arg_LIBRARY}")
   if(NOT arg_SOURCES)
-    message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): SOURCES must give the test-port "
+    message(FATAL_ERROR "${_caller}: SOURCES must give the test-port "
                         "file (daran_test_port()) and the HAL's sources")
   endif()
   if(NOT arg_SECONDS)
@@ -104,8 +114,8 @@ function(daran_ascii_add_fuzz_target name)
   if(NOT arg_TIMEOUT)
     set(arg_TIMEOUT 10)
   endif()
-  _daran_package_dir(_testkit "daran_ascii_add_fuzz_target(${name})" testkit
-                     fuzz/fuzz_port_target.c recorder/recorder.c)
+  _daran_package_dir(_testkit "${_caller}" testkit
+                     fuzz/fuzz_port_target.c fuzz/fuzz_can_target.c recorder/recorder.c)
   set(_fuzz "${_testkit}/fuzz")
   set(_recorder "${_testkit}/recorder/recorder.c")
 
@@ -119,7 +129,7 @@ function(daran_ascii_add_fuzz_target name)
   if(_imported)
     get_target_property(_definitions ${_core} INTERFACE_COMPILE_DEFINITIONS)
     if("${_definitions}" MATCHES "DARAN_CONFIG_HEADER|DARAN_OMIT_LIST_SIGNATURE")
-      message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): ${arg_LIBRARY} is prebuilt with "
+      message(FATAL_ERROR "${_caller}: ${arg_LIBRARY} is prebuilt with "
                           "an options header; give the core that daran_ascii_add_library() makes "
                           "for that header instead")
     endif()
@@ -137,7 +147,14 @@ function(daran_ascii_add_fuzz_target name)
   endif()
   # The harness's own code keeps to the library's warnings (not as errors:
   # a newer compiler must not break an adopter's build).
-  set(_harness_sources "${_fuzz}/fuzz_port_target.c" "${_fuzz}/fuzz_checks.c" "${_recorder}")
+  if(input STREQUAL "FRAMES")
+    set(_harness_sources "${_fuzz}/fuzz_can_target.c" "${_fuzz}/fuzz_can_seeds.c")
+    set(_replay_definitions DARAN_FUZZ_CAN_TARGET)
+  else()
+    set(_harness_sources "${_fuzz}/fuzz_port_target.c" "${_fuzz}/fuzz_checks.c")
+    set(_replay_definitions "")
+  endif()
+  list(APPEND _harness_sources "${_fuzz}/fuzz_rows.c" "${_recorder}")
   set(_warnings -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wstrict-prototypes
                 -Wmissing-prototypes)
   set(_includes "${_fuzz}" "${_testkit}/include" ${arg_INCLUDE_DIRECTORIES})
@@ -150,7 +167,7 @@ function(daran_ascii_add_fuzz_target name)
   add_executable(${name}_replay ${_harness_sources} "${_fuzz}/fuzz_recording.c"
                  "${_fuzz}/fuzz_replay_main.c" ${arg_SOURCES})
   target_include_directories(${name}_replay PRIVATE ${_includes})
-  target_compile_definitions(${name}_replay PRIVATE ${_definitions})
+  target_compile_definitions(${name}_replay PRIVATE ${_definitions} ${_replay_definitions})
   target_compile_options(${name}_replay PRIVATE ${_sanitize})
   target_link_options(${name}_replay PRIVATE ${_sanitize})
   target_link_libraries(${name}_replay PRIVATE ${name}_replay_core)
@@ -166,13 +183,18 @@ function(daran_ascii_add_fuzz_target name)
     if(IS_DIRECTORY "${_entry}")
       list(APPEND _corpus_args "${_entry}")
       list(APPEND _corpus_dirs "${_entry}")
+    elseif(EXISTS "${_entry}" AND input STREQUAL "FRAMES")
+      list(APPEND _corpus_args "${_entry}") # one input
     elseif(EXISTS "${_entry}")
       list(APPEND _corpus_args --recording "${_entry}")
       list(APPEND _recordings "${_entry}")
     else()
-      message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): CORPUS entry ${_entry} not found")
+      message(FATAL_ERROR "${_caller}: CORPUS entry ${_entry} not found")
     endif()
   endforeach()
+  if(input STREQUAL "FRAMES")
+    list(PREPEND _corpus_args --seeds) # the built-in seeds, always
+  endif()
   if(_corpus_args)
     add_test(NAME ${name}_replay
              COMMAND ${name}_replay --timeout ${arg_TIMEOUT} ${_corpus_args})
@@ -181,7 +203,7 @@ function(daran_ascii_add_fuzz_target name)
 
   # The libFuzzer harness: clang only.
   if(NOT CMAKE_C_COMPILER_ID MATCHES "Clang")
-    message(STATUS "daran_ascii_add_fuzz_target(${name}): ${CMAKE_C_COMPILER_ID} is not clang: "
+    message(STATUS "${_caller}: ${CMAKE_C_COMPILER_ID} is not clang: "
                    "only ${name}_replay is built (configure a build folder with "
                    "-DCMAKE_C_COMPILER=clang-14 for the libFuzzer harness ${name} and ${name}_run)")
     return()
@@ -190,7 +212,7 @@ function(daran_ascii_add_fuzz_target name)
     "#include <stddef.h>\n#include <stdint.h>\nint LLVMFuzzerTestOneInput(const uint8_t *d, size_t n);\nint LLVMFuzzerTestOneInput(const uint8_t *d, size_t n) { (void)d; return (int)n * 0; }"
     -fsanitize=fuzzer,address,undefined)
   if(NOT DARAN_FUZZ_HAVE_LIBFUZZER)
-    message(STATUS "daran_ascii_add_fuzz_target(${name}): ${CMAKE_C_COMPILER} does not link "
+    message(STATUS "${_caller}: ${CMAKE_C_COMPILER} does not link "
                    "-fsanitize=fuzzer (libFuzzer); only ${name}_replay is built")
     return()
   endif()
@@ -210,7 +232,9 @@ function(daran_ascii_add_fuzz_target name)
   set(_stamp "${CMAKE_CURRENT_BINARY_DIR}/${name}_seeds.stamp")
   set(_seed_commands COMMAND ${CMAKE_COMMAND} -E rm -rf "${_seeds}"
                      COMMAND ${CMAKE_COMMAND} -E make_directory "${_seeds}")
-  if(_recordings)
+  if(input STREQUAL "FRAMES")
+    list(APPEND _seed_commands COMMAND ${name}_replay --write-seeds "${_seeds}" --seeds)
+  elseif(_recordings)
     set(_recording_args "")
     foreach(_recording IN LISTS _recordings)
       list(APPEND _recording_args --recording "${_recording}")
@@ -220,7 +244,7 @@ function(daran_ascii_add_fuzz_target name)
   add_custom_command(OUTPUT "${_stamp}" ${_seed_commands}
                      COMMAND ${CMAKE_COMMAND} -E touch "${_stamp}"
                      DEPENDS ${_recordings} ${name}_replay
-                     COMMENT "Seeds of ${name} from its recordings"
+                     COMMENT "Seeds of ${name}"
                      VERBATIM)
   add_custom_target(${name}_seeds ALL DEPENDS "${_stamp}")
 
