@@ -43,6 +43,14 @@
 # sources: for it the default core is compiled from the installed sources;
 # a core built with an options header must be given as the target that
 # daran_ascii_add_library() made.
+#
+# daran_ascii_add_can_fuzz_target(<name> ...the same arguments...)
+#
+# fuzzes the port's CAN glue and HAL with frames (testkit/fuzz/fuzz_can_target.c):
+# the test-port file must give can_port, and should give can_deliver. The
+# same targets; <name>_replay also takes --seeds, the kit's built-in seeds,
+# which the CTest test <name>_replay always runs (with the CORPUS entries:
+# folders of inputs, or input files) and <name>_seeds writes for libFuzzer.
 include_guard(GLOBAL)
 include("${CMAKE_CURRENT_LIST_DIR}/DaranAddLibrary.cmake") # the package's helpers
 
