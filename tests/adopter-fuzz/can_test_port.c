@@ -4,8 +4,8 @@
  * filter passes standard ids at the drive's current id and node 0.
  *
  * Compiled with BROKEN_CAN, the environment variable BROKEN_CAN chooses a
- * mistake the harness must catch on its built-in seeds
- * (tests/adopter-fuzz/CMakeLists.txt):
+ * mistake the harness must catch on its built-in seeds (unset: none;
+ * tests/adopter-fuzz/CMakeLists.txt):
  *   1  a receive path that takes an extended id for a standard one
  *   2  a clock in tenths of a millisecond */
 #include <stdlib.h>
