@@ -28,7 +28,10 @@
  *  - a frame for the drive feeds the watchdog first (C18), then makes at
  *    most what its code allows (a system command its one action or a
  *    start's move; a motion its move, then a feed; a write a set of the row
- *    at its address; a read or preset nothing), and sends at most what its
+ *    at its address; a read or preset nothing; a motion whose target is not
+ *    finite, whose bandwidth, acceleration or ramp rate is negative, whose
+ *    cruise is not above 0 or whose mode is outside C1's sets nothing but
+ *    the feed, and no frame back), and sends at most what its
  *    code allows: a fast read exactly one status frame, a read one reply of
  *    a known address echoing it with the row's type code and the value the
  *    HAL's getter gives, a motion or preset at most one status frame,
@@ -284,6 +287,45 @@ static bool is_action(const daran_call_t *c, daran_action_t action)
     return c->kind == DARAN_CALL_ACTION && c->action == action;
 }
 
+/* A direct motion (0x019-0x01D) whose fields the drive must refuse
+ * (can.md 2.1, C1, C27): a target that is not finite, a trapezoid's cruise
+ * not above 0 or acceleration below 0, a mode outside C1's sets. NULL when
+ * the harness sees no such field. */
+static const char *refused_motion(const daran_can_frame_t *f)
+{
+    uint32_t code = f->id & 0x1Fu;
+    uint32_t bits = get_u32(f->data);
+    float target;
+    memcpy(&target, &bits, sizeof target);
+    int16_t field4 = (int16_t)(uint16_t)get_u16(f->data + 4);
+    int16_t field6 = (int16_t)(uint16_t)get_u16(f->data + 6);
+    uint32_t mode = get_u16(f->data + 6);
+    if (code < 0x19u || code > 0x1Du) {
+        return NULL;
+    }
+    if (!isfinite(target)) {
+        return "a target that is not finite";
+    }
+    if (code == 0x19u && field6 < 0) {
+        return "a negative bandwidth";
+    }
+    if (code == 0x1Au && (field4 <= 0 || field6 < 0)) {
+        return "a trapezoid's cruise not above 0 or acceleration below 0";
+    }
+    if ((code == 0x1Cu && (mode == 2u || mode == 200u) && field4 < 0) ||
+        (code == 0x1Du && mode != 1u && mode != 100u && field4 < 0)) {
+        return "a negative ramp rate";
+    }
+    if (code == 0x1Cu && mode != 1u && mode != 100u && mode != 2u && mode != 200u) {
+        return "a velocity mode outside 1, 2 (or x 100)";
+    }
+    if (code == 0x1Du && mode != 1u && mode != 100u && mode != 6u && mode != 600u && mode != 2u &&
+        mode != 200u) {
+        return "a torque mode outside 1, 6, 2 (or x 100)";
+    }
+    return NULL;
+}
+
 /* What may follow the feed of a frame for the drive (@p rest, @p n of them). */
 static void check_frame_effects(const can_harness_t *h, const daran_call_t *const *rest, size_t n)
 {
@@ -295,6 +337,12 @@ static void check_frame_effects(const can_harness_t *h, const daran_call_t *cons
     uint32_t subcode = get_u32(f->data);
     bool moving = (code >= 0x19u && code <= 0x1Du) ||
                   (code == CODE_SYSTEM && subcode >= 0x10u && subcode <= 0x15u);
+    const char *refused = refused_motion(f);
+    if (refused != NULL && (n != 0u || h->n_sent != 0u)) {
+        violated("a motion frame with %s made a setter, move or action call beyond the feed, or "
+                 "was answered (C27: ignored as a whole)",
+                 refused);
+    }
     if (moving) {
         bool ok = n == 0u || (n <= 2u && rest[0]->kind == DARAN_CALL_MOVE &&
                               (n == 1u || is_action(rest[1], DARAN_ACTION_FEED_WATCHDOG)));
