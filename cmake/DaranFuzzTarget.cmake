@@ -32,7 +32,8 @@
 #
 # Instrumentation: both programs compile the core's sources themselves (a
 # copy of <core target>: its SOURCES, include directories, definitions,
-# options and C standard), so the adopter's core target stays as they build
+# options and C standard; one copy per core and per program kind, shared by
+# every fuzz target of that core, lines and frames), so the adopter's core target stays as they build
 # it, while the fuzzed core carries libFuzzer's coverage (-fsanitize=fuzzer-no-link)
 # and both carry ASan + UBSan: without that, libFuzzer would see no edge in
 # the core and fuzz blind. The harness, the recorder and the adopter's
@@ -141,7 +142,7 @@ function(_daran_add_fuzz_target function input name)
                           "an options header; give the core that daran_ascii_add_library() makes "
                           "for that header instead")
     endif()
-    set(_core "${name}_default_core")
+    set(_core daran_fuzz_default_core)
     if(NOT TARGET ${_core})
       daran_ascii_add_library(${_core})
     endif()
@@ -171,14 +172,20 @@ function(_daran_add_fuzz_target function input name)
   set(_definitions DARAN_RECORDER_CALLS_MAX=256)
 
   # The replay: any compiler.
-  _daran_fuzz_core_copy(${name}_replay_core ${_core} ${_sanitize})
+  # One copy of a core per set of flags, shared by its fuzz targets (lines
+  # and frames of one port compile it once).
+  string(MAKE_C_IDENTIFIER "${_core}" _core_id)
+  set(_replay_core daran_fuzz_${_core_id}_replay_core)
+  if(NOT TARGET ${_replay_core})
+    _daran_fuzz_core_copy(${_replay_core} ${_core} ${_sanitize})
+  endif()
   add_executable(${name}_replay ${_harness_sources} "${_fuzz}/fuzz_recording.c"
                  "${_fuzz}/fuzz_replay_main.c" ${arg_SOURCES})
   target_include_directories(${name}_replay PRIVATE ${_includes})
   target_compile_definitions(${name}_replay PRIVATE ${_definitions} ${_replay_definitions})
   target_compile_options(${name}_replay PRIVATE ${_sanitize})
   target_link_options(${name}_replay PRIVATE ${_sanitize})
-  target_link_libraries(${name}_replay PRIVATE ${name}_replay_core)
+  target_link_libraries(${name}_replay PRIVATE ${_replay_core})
   set_target_properties(${name}_replay PROPERTIES C_STANDARD 11)
   set_source_files_properties(${_harness_sources} "${_fuzz}/fuzz_recording.c"
     "${_fuzz}/fuzz_replay_main.c" PROPERTIES COMPILE_OPTIONS "${_warnings}")
@@ -227,13 +234,16 @@ function(_daran_add_fuzz_target function input name)
   # -O1: a Debug build's -O0 would fuzz several times slower.
   set(_fuzzer_flags -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
                     -fno-omit-frame-pointer -O1)
-  _daran_fuzz_core_copy(${name}_core ${_core} ${_fuzzer_flags})
+  set(_fuzzer_core daran_fuzz_${_core_id}_fuzzer_core)
+  if(NOT TARGET ${_fuzzer_core})
+    _daran_fuzz_core_copy(${_fuzzer_core} ${_core} ${_fuzzer_flags})
+  endif()
   add_executable(${name} ${_harness_sources} ${arg_SOURCES})
   target_include_directories(${name} PRIVATE ${_includes})
   target_compile_definitions(${name} PRIVATE ${_definitions})
   target_compile_options(${name} PRIVATE ${_fuzzer_flags})
   target_link_options(${name} PRIVATE -fsanitize=fuzzer,address,undefined)
-  target_link_libraries(${name} PRIVATE ${name}_core)
+  target_link_libraries(${name} PRIVATE ${_fuzzer_core})
   set_target_properties(${name} PROPERTIES C_STANDARD 11)
 
   set(_seeds "${CMAKE_CURRENT_BINARY_DIR}/${name}_seeds")
