@@ -32,7 +32,8 @@
 #
 # Instrumentation: both programs compile the core's sources themselves (a
 # copy of <core target>: its SOURCES, include directories, definitions,
-# options and C standard), so the adopter's core target stays as they build
+# options and C standard; one copy per core and per program kind, shared by
+# every fuzz target of that core, lines and frames), so the adopter's core target stays as they build
 # it, while the fuzzed core carries libFuzzer's coverage (-fsanitize=fuzzer-no-link)
 # and both carry ASan + UBSan: without that, libFuzzer would see no edge in
 # the core and fuzz blind. The harness, the recorder and the adopter's
@@ -43,6 +44,14 @@
 # sources: for it the default core is compiled from the installed sources;
 # a core built with an options header must be given as the target that
 # daran_ascii_add_library() made.
+#
+# daran_ascii_add_can_fuzz_target(<name> ...the same arguments...)
+#
+# fuzzes the port's CAN glue and HAL with frames (testkit/fuzz/fuzz_can_target.c):
+# the test-port file must give can_port, and should give can_deliver. The
+# same targets; <name>_replay also takes --seeds, the kit's built-in seeds,
+# which the CTest test <name>_replay always runs (with the CORPUS entries:
+# folders of inputs, or input files) and <name>_seeds writes for libFuzzer.
 include_guard(GLOBAL)
 include("${CMAKE_CURRENT_LIST_DIR}/DaranAddLibrary.cmake") # the package's helpers
 
@@ -88,14 +97,24 @@ function(_daran_fuzz_core_copy copy core)
 endfunction()
 
 function(daran_ascii_add_fuzz_target name)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "LIBRARY;SECONDS;TIMEOUT"
+  _daran_add_fuzz_target(daran_ascii_add_fuzz_target LINES ${name} ${ARGN})
+endfunction()
+
+function(daran_ascii_add_can_fuzz_target name)
+  _daran_add_fuzz_target(daran_ascii_add_can_fuzz_target FRAMES ${name} ${ARGN})
+endfunction()
+
+# <function> <LINES or FRAMES> <name> <arguments of the function>
+function(_daran_add_fuzz_target function input name)
+  set(_caller "${function}(${name})")
+  cmake_parse_arguments(PARSE_ARGV 3 arg "" "LIBRARY;SECONDS;TIMEOUT"
                         "SOURCES;INCLUDE_DIRECTORIES;CORPUS")
   if(arg_UNPARSED_ARGUMENTS)
-    message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): unknown arguments ${arg_UNPARSED_ARGUMENTS}")
+    message(FATAL_ERROR "${_caller}: unknown arguments ${arg_UNPARSED_ARGUMENTS}")
   endif()
-  _daran_check_core("daran_ascii_add_fuzz_target(${name})" "${arg_LIBRARY}")
+  _daran_check_core("${_caller}" "${arg_LIBRARY}")
   if(NOT arg_SOURCES)
-    message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): SOURCES must give the test-port "
+    message(FATAL_ERROR "${_caller}: SOURCES must give the test-port "
                         "file (daran_test_port()) and the HAL's sources")
   endif()
   if(NOT arg_SECONDS)
@@ -104,8 +123,8 @@ function(daran_ascii_add_fuzz_target name)
   if(NOT arg_TIMEOUT)
     set(arg_TIMEOUT 10)
   endif()
-  _daran_package_dir(_testkit "daran_ascii_add_fuzz_target(${name})" testkit
-                     fuzz/fuzz_port_target.c recorder/recorder.c)
+  _daran_package_dir(_testkit "${_caller}" testkit
+                     fuzz/fuzz_port_target.c fuzz/fuzz_can_target.c recorder/recorder.c)
   set(_fuzz "${_testkit}/fuzz")
   set(_recorder "${_testkit}/recorder/recorder.c")
 
@@ -119,11 +138,11 @@ function(daran_ascii_add_fuzz_target name)
   if(_imported)
     get_target_property(_definitions ${_core} INTERFACE_COMPILE_DEFINITIONS)
     if("${_definitions}" MATCHES "DARAN_CONFIG_HEADER|DARAN_OMIT_LIST_SIGNATURE")
-      message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): ${arg_LIBRARY} is prebuilt with "
+      message(FATAL_ERROR "${_caller}: ${arg_LIBRARY} is prebuilt with "
                           "an options header; give the core that daran_ascii_add_library() makes "
                           "for that header instead")
     endif()
-    set(_core "${name}_default_core")
+    set(_core daran_fuzz_default_core)
     if(NOT TARGET ${_core})
       daran_ascii_add_library(${_core})
     endif()
@@ -137,7 +156,14 @@ function(daran_ascii_add_fuzz_target name)
   endif()
   # The harness's own code keeps to the library's warnings (not as errors:
   # a newer compiler must not break an adopter's build).
-  set(_harness_sources "${_fuzz}/fuzz_port_target.c" "${_fuzz}/fuzz_checks.c" "${_recorder}")
+  if(input STREQUAL "FRAMES")
+    set(_harness_sources "${_fuzz}/fuzz_can_target.c" "${_fuzz}/fuzz_can_seeds.c")
+    set(_replay_definitions DARAN_FUZZ_CAN_TARGET)
+  else()
+    set(_harness_sources "${_fuzz}/fuzz_port_target.c" "${_fuzz}/fuzz_checks.c")
+    set(_replay_definitions "")
+  endif()
+  list(APPEND _harness_sources "${_fuzz}/fuzz_rows.c" "${_recorder}")
   set(_warnings -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wstrict-prototypes
                 -Wmissing-prototypes)
   set(_includes "${_fuzz}" "${_testkit}/include" ${arg_INCLUDE_DIRECTORIES})
@@ -146,14 +172,20 @@ function(daran_ascii_add_fuzz_target name)
   set(_definitions DARAN_RECORDER_CALLS_MAX=256)
 
   # The replay: any compiler.
-  _daran_fuzz_core_copy(${name}_replay_core ${_core} ${_sanitize})
+  # One copy of a core per set of flags, shared by its fuzz targets (lines
+  # and frames of one port compile it once).
+  string(MAKE_C_IDENTIFIER "${_core}" _core_id)
+  set(_replay_core daran_fuzz_${_core_id}_replay_core)
+  if(NOT TARGET ${_replay_core})
+    _daran_fuzz_core_copy(${_replay_core} ${_core} ${_sanitize})
+  endif()
   add_executable(${name}_replay ${_harness_sources} "${_fuzz}/fuzz_recording.c"
                  "${_fuzz}/fuzz_replay_main.c" ${arg_SOURCES})
   target_include_directories(${name}_replay PRIVATE ${_includes})
-  target_compile_definitions(${name}_replay PRIVATE ${_definitions})
+  target_compile_definitions(${name}_replay PRIVATE ${_definitions} ${_replay_definitions})
   target_compile_options(${name}_replay PRIVATE ${_sanitize})
   target_link_options(${name}_replay PRIVATE ${_sanitize})
-  target_link_libraries(${name}_replay PRIVATE ${name}_replay_core)
+  target_link_libraries(${name}_replay PRIVATE ${_replay_core})
   set_target_properties(${name}_replay PROPERTIES C_STANDARD 11)
   set_source_files_properties(${_harness_sources} "${_fuzz}/fuzz_recording.c"
     "${_fuzz}/fuzz_replay_main.c" PROPERTIES COMPILE_OPTIONS "${_warnings}")
@@ -166,13 +198,18 @@ function(daran_ascii_add_fuzz_target name)
     if(IS_DIRECTORY "${_entry}")
       list(APPEND _corpus_args "${_entry}")
       list(APPEND _corpus_dirs "${_entry}")
+    elseif(EXISTS "${_entry}" AND input STREQUAL "FRAMES")
+      list(APPEND _corpus_args "${_entry}") # one input
     elseif(EXISTS "${_entry}")
       list(APPEND _corpus_args --recording "${_entry}")
       list(APPEND _recordings "${_entry}")
     else()
-      message(FATAL_ERROR "daran_ascii_add_fuzz_target(${name}): CORPUS entry ${_entry} not found")
+      message(FATAL_ERROR "${_caller}: CORPUS entry ${_entry} not found")
     endif()
   endforeach()
+  if(input STREQUAL "FRAMES")
+    list(PREPEND _corpus_args --seeds) # the built-in seeds, always
+  endif()
   if(_corpus_args)
     add_test(NAME ${name}_replay
              COMMAND ${name}_replay --timeout ${arg_TIMEOUT} ${_corpus_args})
@@ -181,7 +218,7 @@ function(daran_ascii_add_fuzz_target name)
 
   # The libFuzzer harness: clang only.
   if(NOT CMAKE_C_COMPILER_ID MATCHES "Clang")
-    message(STATUS "daran_ascii_add_fuzz_target(${name}): ${CMAKE_C_COMPILER_ID} is not clang: "
+    message(STATUS "${_caller}: ${CMAKE_C_COMPILER_ID} is not clang: "
                    "only ${name}_replay is built (configure a build folder with "
                    "-DCMAKE_C_COMPILER=clang-14 for the libFuzzer harness ${name} and ${name}_run)")
     return()
@@ -190,27 +227,32 @@ function(daran_ascii_add_fuzz_target name)
     "#include <stddef.h>\n#include <stdint.h>\nint LLVMFuzzerTestOneInput(const uint8_t *d, size_t n);\nint LLVMFuzzerTestOneInput(const uint8_t *d, size_t n) { (void)d; return (int)n * 0; }"
     -fsanitize=fuzzer,address,undefined)
   if(NOT DARAN_FUZZ_HAVE_LIBFUZZER)
-    message(STATUS "daran_ascii_add_fuzz_target(${name}): ${CMAKE_C_COMPILER} does not link "
+    message(STATUS "${_caller}: ${CMAKE_C_COMPILER} does not link "
                    "-fsanitize=fuzzer (libFuzzer); only ${name}_replay is built")
     return()
   endif()
   # -O1: a Debug build's -O0 would fuzz several times slower.
   set(_fuzzer_flags -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
                     -fno-omit-frame-pointer -O1)
-  _daran_fuzz_core_copy(${name}_core ${_core} ${_fuzzer_flags})
+  set(_fuzzer_core daran_fuzz_${_core_id}_fuzzer_core)
+  if(NOT TARGET ${_fuzzer_core})
+    _daran_fuzz_core_copy(${_fuzzer_core} ${_core} ${_fuzzer_flags})
+  endif()
   add_executable(${name} ${_harness_sources} ${arg_SOURCES})
   target_include_directories(${name} PRIVATE ${_includes})
   target_compile_definitions(${name} PRIVATE ${_definitions})
   target_compile_options(${name} PRIVATE ${_fuzzer_flags})
   target_link_options(${name} PRIVATE -fsanitize=fuzzer,address,undefined)
-  target_link_libraries(${name} PRIVATE ${name}_core)
+  target_link_libraries(${name} PRIVATE ${_fuzzer_core})
   set_target_properties(${name} PROPERTIES C_STANDARD 11)
 
   set(_seeds "${CMAKE_CURRENT_BINARY_DIR}/${name}_seeds")
   set(_stamp "${CMAKE_CURRENT_BINARY_DIR}/${name}_seeds.stamp")
   set(_seed_commands COMMAND ${CMAKE_COMMAND} -E rm -rf "${_seeds}"
                      COMMAND ${CMAKE_COMMAND} -E make_directory "${_seeds}")
-  if(_recordings)
+  if(input STREQUAL "FRAMES")
+    list(APPEND _seed_commands COMMAND ${name}_replay --write-seeds "${_seeds}" --seeds)
+  elseif(_recordings)
     set(_recording_args "")
     foreach(_recording IN LISTS _recordings)
       list(APPEND _recording_args --recording "${_recording}")
@@ -220,7 +262,7 @@ function(daran_ascii_add_fuzz_target name)
   add_custom_command(OUTPUT "${_stamp}" ${_seed_commands}
                      COMMAND ${CMAKE_COMMAND} -E touch "${_stamp}"
                      DEPENDS ${_recordings} ${name}_replay
-                     COMMENT "Seeds of ${name} from its recordings"
+                     COMMENT "Seeds of ${name}"
                      VERBATIM)
   add_custom_target(${name}_seeds ALL DEPENDS "${_stamp}")
 

@@ -40,6 +40,7 @@ static void load_defaults(acme_drive_t *drive)
     s[DARAN_PROP_VBUS_VOLTAGE].f32 = 48.0f;
     s[DARAN_PROP_UART_BAUDRATE].u32 = 115200;
     s[DARAN_PROP_CAN_BAUD_RATE].u32 = 1000000;
+    s[DARAN_PROP_CAN_PROTOCOL].u32 = 1; /* the vendor's CAN protocol on (its factory default) */
     s[DARAN_PROP_FW_VERSION].u32 = ACME_FW_VERSION;
     s[DARAN_PROP_HW_VERSION].u32 = ACME_HW_VERSION;
     s[DARAN_PROP_SHAFT_VEL_LIMIT].f32 = 300.0f;
@@ -74,6 +75,7 @@ void acme_drive_power_on(acme_drive_t *drive)
     drive->plant.fan_duty = drive->settings[DARAN_PROP_FAN_DUTY].f32;
     drive->settings[DARAN_PROP_POS_SETPOINT].f32 = pos;
     drive->settings[DARAN_PROP_INPUT_POS].f32 = pos;
+    acme_can_filter_set(&drive->can_filter, drive->settings[DARAN_PROP_CAN_NODE_ID].u32);
 }
 
 void acme_drive_factory_reset(acme_drive_t *drive, uint64_t serial_number)
@@ -91,6 +93,8 @@ void acme_drive_run(acme_drive_t *drive, uint32_t ms)
             drive->plant.mode = ACME_PLANT_HOLD;
         }
         acme_plant_step(&drive->plant, 0.001f);
+        drive->time_ms++;
+        drive->can_mailboxes_busy = 0;
     }
 }
 
@@ -138,6 +142,9 @@ static daran_result_t set(void *ctx, daran_prop_t prop, daran_value_t value)
         break;
     case DARAN_PROP_FAN_DUTY:
         drive->plant.fan_duty = value.f32;
+        break;
+    case DARAN_PROP_CAN_NODE_ID:
+        acme_can_filter_set(&drive->can_filter, value.u32); /* frames for the new id from now on */
         break;
     case DARAN_PROP_POS_SETPOINT:
         s[DARAN_PROP_INPUT_POS] = value;

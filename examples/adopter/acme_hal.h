@@ -10,6 +10,7 @@
 
 #include "daran_ascii.h"
 
+#include "acme_can.h"
 #include "acme_plant.h"
 
 #define ACME_FW_VERSION 210u /* 2.10 */
@@ -21,6 +22,10 @@ typedef struct acme_drive {
     bool flash_valid;
     uint64_t serial_number;
     acme_plant_t plant;
+    uint32_t time_ms;              /* the drive's clock: acme_drive_run() moves it */
+    acme_can_filter_t can_filter;  /* set for axis0.config.can_node_id */
+    uint32_t can_mailboxes_busy;   /* frames the bus has not taken yet */
+    uint32_t can_frames_sent;
 } acme_drive_t;
 
 /* A new drive from the factory: flash erased, defaults, node id 1, closed
@@ -31,7 +36,8 @@ void acme_drive_factory_reset(acme_drive_t *drive, uint64_t serial_number);
  * loop, holding the shaft where it is. */
 void acme_drive_power_on(acme_drive_t *drive);
 
-/* The control loop: advance the plant by @p ms milliseconds. */
+/* The control loop: advance the plant and the clock by @p ms milliseconds;
+ * the CAN bus takes the frames waiting in the mailboxes. */
 void acme_drive_run(acme_drive_t *drive, uint32_t ms);
 
 extern const daran_hal_t acme_hal;

@@ -1,5 +1,6 @@
-/* The ACME X1 handed to daran-ascii's conformance suite and fuzz target:
- * the HAL, its drive and the factory reset (testkit/include/daran_test_port.h). */
+/* The ACME X1 handed to daran-ascii's conformance suite and fuzz targets:
+ * the HAL, its drive, the factory reset and the CAN glue
+ * (testkit/include/daran_test_port.h). */
 #include "daran_test_port.h"
 
 #include "acme_hal.h"
@@ -27,6 +28,9 @@ const daran_test_port_t *daran_test_port(void)
         .ctx = &drive,
         .reset = factory_reset,
         .advance = run,
+        .can_port = &acme_can_port,
+        .can_ctx = &drive,
+        .can_deliver = acme_can_deliver,
     };
     return &port;
 }

@@ -63,8 +63,18 @@ typedef enum conf_req {
     REQ_NOT_RUNNING,
     REQ_NO_PRESET,
     REQ_REPLY_FORM,
+    /* the CAN front end (check_can.c), numbered CAN1.. in the report */
+    REQ_CAN_STATUS,
+    REQ_CAN_REPLY_STATE,
+    REQ_CAN_FILTER,
+    REQ_CAN_DUPLICATE_ID,
+    REQ_CAN_NODE_GUARD,
+    REQ_CAN_HEARTBEAT,
+    REQ_CAN_REFUSED,
     REQ_COUNT
 } conf_req_t;
+
+#define REQ_CAN_FIRST REQ_CAN_STATUS
 
 /* The drive's id after a reset (daran_test_port.h) and one that is not it. */
 #define CONF_ID 1u
@@ -87,12 +97,23 @@ void conf_send(const char *line);
 void conf_send_n(const char *line, size_t len);
 /* Let drive time pass when the port can (daran_test_port_t.advance). */
 void conf_advance(uint32_t ms);
+/* The drive the check bound (for the CAN front end). */
+daran_drive_t *conf_drive(void);
+/* Add to the check's transcript (printf-style), and the HAL calls the
+ * recorder holds, as conf_send() writes them. */
+void conf_transcript(const char *fmt, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+void conf_transcript_calls(void);
 /* The last exchange: the replies as written (line ends included), their
  * line count, the result daran_process_line() returned, the recorder. */
 const char *conf_reply(void);
 size_t conf_reply_len(void);
 size_t conf_reply_lines(void);
 const daran_recorder_t *conf_rec(void);
+void conf_rec_clear(void);
 /* The check fails; the message says what was expected (printf-style). */
 void conf_fail(const char *fmt, ...)
 #if defined(__GNUC__) || defined(__clang__)
@@ -212,6 +233,43 @@ void conf_check_properties(void);
 void conf_check_commands(void);
 void conf_check_persistence(void);
 void conf_check_bad_input(void);
+void conf_check_can(void);
+
+/* ---- can_harness.c: the CAN front end of a check (DARAN_ENABLE_CAN) ---- */
+
+#if DARAN_ENABLE_CAN
+/* Begin a CAN check: conf_begin(), then a fresh daran_can_t bound to the
+ * drive and to the port's can_port (send wrapped). False when the check
+ * has failed already (reset, daran_can_init(), can.config.protocol 0). */
+bool conf_can_begin(conf_req_t req, const char *subject);
+/* Within a CAN check: reset and bind both front ends again. */
+bool conf_can_restart(void);
+/* An 8-byte standard data frame at @p node with @p code. */
+daran_can_frame_t conf_can_frame(unsigned node, unsigned code, const uint8_t data[8]);
+/* Hand @p frame over (through the port's can_deliver when it has one), then
+ * daran_can_poll(): the frames sent and the HAL calls are this frame's. */
+void conf_can_deliver(const daran_can_frame_t *frame);
+/* @p ms of drive time, one millisecond at a time, each followed by
+ * daran_can_poll(): the frames sent and the setter, move and action calls
+ * are collected with the time they came at. */
+void conf_can_wait(uint32_t ms);
+/* What the last deliver or wait sent: count, frame, when (ms into the wait). */
+size_t conf_can_sent_count(void);
+const daran_can_frame_t *conf_can_sent(size_t i);
+uint32_t conf_can_sent_at(size_t i);
+/* Actions of @p kind the last wait made, and when the first came. */
+size_t conf_can_wait_actions(daran_action_t kind, uint32_t *first_at);
+/* Setters, moves and actions the last wait made. */
+size_t conf_can_wait_effects(void);
+/* Expectations on the last deliver; each fails the check and returns false
+ * when it does not hold. */
+bool conf_can_expect_nothing_sent(void);
+/* Exactly one frame, the status frame of node @p node with T, E, position,
+ * velocity and torque as `r` reads them now. */
+bool conf_can_expect_status(unsigned node);
+/* Every frame sent was taken by the port's send (it answered true). */
+bool conf_can_expect_taken(void);
+#endif
 
 /* The families of commands the bad-input checks vary (check_commands.c). */
 typedef struct conf_family {

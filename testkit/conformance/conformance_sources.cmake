@@ -8,5 +8,7 @@ set(DARAN_CONFORMANCE_SOURCES
   check_properties.c
   check_commands.c
   check_persistence.c
-  check_bad_input.c)
+  check_bad_input.c
+  can_harness.c
+  check_can.c)
 set(DARAN_CONFORMANCE_HEADERS conformance.h)

@@ -46,6 +46,13 @@ static const char *const titles[REQ_COUNT] = {
     [REQ_NOT_RUNNING] = "motion after st answers estop active, after st + sc motor idle; no move",
     [REQ_NO_PRESET] = "a multi-motor start without a preset answers no preset, no HAL effect",
     [REQ_REPLY_FORM] = "every reply line is printable ASCII, ends in the line end, fits DARAN_REPLY_MAX, right *N",
+    [REQ_CAN_STATUS] = "a fast read at the own node or node 0 answers one status frame with T, E and the values r reads",
+    [REQ_CAN_REPLY_STATE] = "with enable_reply_state 1 a valid motion frame answers one status frame, a refused one none",
+    [REQ_CAN_FILTER] = "the port's filter passes the own node, node 0 and status frames, and follows a new node id",
+    [REQ_CAN_DUPLICATE_ID] = "a status frame with the own id sets can.error bit 0 through the HAL, keeps running, sc clears",
+    [REQ_CAN_NODE_GUARD] = "with can.config.timeout_ms, frames feed the guard; without one for that long the drive idles",
+    [REQ_CAN_HEARTBEAT] = "can.config.heartbeat_ms sends the status frame every that many ms of drive time, 0 none",
+    [REQ_CAN_REFUSED] = "a frame the drive must ignore gets no frame back and no HAL effect (a well-formed one: the feed)",
 };
 
 /* Detailed reports per requirement; later failures get one line each. */
@@ -91,7 +98,9 @@ static struct harness {
 const char *conf_req_id(conf_req_t req)
 {
     static char ids[REQ_COUNT][8];
-    if (ids[req][0] == '\0') {
+    if (ids[req][0] == '\0' && req >= REQ_CAN_FIRST) {
+        (void)snprintf(ids[req], sizeof ids[req], "CAN%u", (unsigned)(req - REQ_CAN_FIRST) % 100u + 1u);
+    } else if (ids[req][0] == '\0') {
         (void)snprintf(ids[req], sizeof ids[req], "C%u", (unsigned)req % 1000u + 1u);
     }
     return ids[req];
@@ -110,28 +119,6 @@ void conf_list_requirements(void)
 }
 
 /* ---- text helpers ---- */
-
-static void transcript_add(const char *fmt, ...)
-#if defined(__GNUC__) || defined(__clang__)
-    __attribute__((format(printf, 1, 2)))
-#endif
-    ;
-static void transcript_add(const char *fmt, ...)
-{
-    if (h.transcript_len + 1u >= sizeof h.transcript) {
-        return;
-    }
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(h.transcript + h.transcript_len, sizeof h.transcript - h.transcript_len, fmt, ap);
-    va_end(ap);
-    if (n > 0) {
-        h.transcript_len += (size_t)n;
-        if (h.transcript_len >= sizeof h.transcript) {
-            h.transcript_len = sizeof h.transcript - 1u;
-        }
-    }
-}
 
 unsigned conf_xor(const char *text, size_t len)
 {
@@ -252,7 +239,7 @@ bool conf_restart(void)
     }
     bind_drive();
     if (h.transcript_len > 0u) {
-        transcript_add("  (reset)\n");
+        conf_transcript("  (reset)\n");
     }
     return true;
 }
@@ -274,6 +261,50 @@ void conf_abandon(void)
     h.in_check = false;
 }
 
+void conf_transcript(const char *fmt, ...)
+{
+    if (h.transcript_len + 1u >= sizeof h.transcript) {
+        return;
+    }
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(h.transcript + h.transcript_len, sizeof h.transcript - h.transcript_len, fmt, ap);
+    va_end(ap);
+    if (n > 0) {
+        h.transcript_len += (size_t)n;
+        if (h.transcript_len >= sizeof h.transcript) {
+            h.transcript_len = sizeof h.transcript - 1u;
+        }
+    }
+}
+
+void conf_transcript_calls(void)
+{
+    if (h.rec.n_calls == 0u && h.rec.n_dropped == 0u) {
+        conf_transcript("    HAL calls seen: none\n");
+        return;
+    }
+    conf_transcript("    HAL calls seen:\n");
+    for (size_t i = 0; i < h.rec.n_calls; i++) {
+        char call[256];
+        (void)daran_call_describe(&h.rec.calls[i], call, sizeof call);
+        conf_transcript("      %s\n", call);
+    }
+    if (h.rec.n_dropped > 0u) {
+        conf_transcript("      ... and %lu more\n", (unsigned long)h.rec.n_dropped);
+    }
+}
+
+void conf_rec_clear(void)
+{
+    daran_recorder_clear(&h.rec);
+}
+
+daran_drive_t *conf_drive(void)
+{
+    return &h.drive;
+}
+
 void conf_send_n(const char *line, size_t len)
 {
     daran_recorder_clear(&h.rec);
@@ -288,28 +319,16 @@ void conf_send_n(const char *line, size_t len)
 
     char text[700];
     (void)daran_recorder_escape(line, len, text, sizeof text);
-    transcript_add("  > %s%s\n", text, len > 300u ? " ..." : "");
+    conf_transcript("  > %s%s\n", text, len > 300u ? " ..." : "");
     if (h.reply_len == 0u) {
-        transcript_add("    reply: (none)\n");
+        conf_transcript("    reply: (none)\n");
     } else {
         size_t shown = h.reply_len < 600u ? h.reply_len : 600u;
         (void)daran_recorder_escape(h.reply, shown, text, sizeof text);
-        transcript_add("    reply: \"%s\"%s\n", text,
+        conf_transcript("    reply: \"%s\"%s\n", text,
                        shown < h.reply_len ? " ... (cut; more lines)" : "");
     }
-    if (h.rec.n_calls == 0u && h.rec.n_dropped == 0u) {
-        transcript_add("    HAL calls seen: none\n");
-    } else {
-        transcript_add("    HAL calls seen:\n");
-        for (size_t i = 0; i < h.rec.n_calls; i++) {
-            char call[256];
-            (void)daran_call_describe(&h.rec.calls[i], call, sizeof call);
-            transcript_add("      %s\n", call);
-        }
-        if (h.rec.n_dropped > 0u) {
-            transcript_add("      ... and %lu more\n", (unsigned long)h.rec.n_dropped);
-        }
-    }
+    conf_transcript_calls();
 }
 
 void conf_send(const char *line)
@@ -321,7 +340,7 @@ void conf_advance(uint32_t ms)
 {
     if (h.port->advance != NULL) {
         h.port->advance(h.port->ctx, ms);
-        transcript_add("  (drive time: %lu ms)\n", (unsigned long)ms);
+        conf_transcript("  (drive time: %lu ms)\n", (unsigned long)ms);
     }
 }
 

@@ -36,6 +36,12 @@ static const char *port_problem(const daran_test_port_t *port)
     if (port->command_count > 0u && port->commands == NULL) {
         return "the test port gives a command count but no commands";
     }
+    if (port->can_port != NULL && (port->can_port->send == NULL || port->can_port->now_ms == NULL)) {
+        return "the test port's can_port has no send() or no now_ms()";
+    }
+    if (port->can_port == NULL && port->can_deliver != NULL) {
+        return "the test port gives can_deliver but no can_port";
+    }
     return NULL;
 }
 
@@ -64,9 +70,13 @@ int main(int argc, char **argv)
     printf("daran-ascii %s conformance suite, port: %s\n", daran_version(),
            port->name != NULL ? port->name : "(unnamed)");
     printf("build: DARAN_LINE_MAX %d, DARAN_REPLY_MAX %d, DARAN_MOTOR_ID_MAX %d, help %s, "
-           "multi-motor %s, %d property ids\n\n",
+           "multi-motor %s, %d property ids, CAN %s\n\n",
            DARAN_LINE_MAX, DARAN_REPLY_MAX, DARAN_MOTOR_ID_MAX, DARAN_ENABLE_HELP ? "on" : "off",
-           DARAN_ENABLE_MULTI_MOTOR ? "on" : "off", (int)DARAN_PROP_COUNT);
+           DARAN_ENABLE_MULTI_MOTOR ? "on" : "off", (int)DARAN_PROP_COUNT,
+           !DARAN_ENABLE_CAN ? "compiled out"
+           : port->can_port == NULL ? "not given by the test port"
+           : port->can_deliver == NULL ? "on (no can_deliver: no filter)"
+                                       : "on");
 
     conf_harness_init(port, verbose, transcripts);
     conf_model_init();
@@ -79,5 +89,6 @@ int main(int argc, char **argv)
     conf_check_commands();
     conf_check_persistence();
     conf_check_bad_input();
+    conf_check_can();
     return conf_report();
 }

@@ -79,7 +79,8 @@ int daran_fuzz_recording_next(daran_fuzz_recording_t *rec, char *out, size_t cap
 void daran_fuzz_set_input_name(const char *name);
 
 /** What the inputs run so far exercised (the replay prints it: a corpus
- * that never reaches a HAL call or another drive's line checks little). */
+ * that never reaches a HAL call or another drive's line checks little). The
+ * CAN target counts frames: run, to ignore, for another node, with a call. */
 typedef struct daran_fuzz_totals {
     size_t lines;         /**< request lines run */
     size_t answered_error; /**< ... answered with an error */
@@ -90,7 +91,32 @@ typedef struct daran_fuzz_totals {
 
 const daran_fuzz_totals_t *daran_fuzz_totals(void);
 
-/** The libFuzzer entry point: @p data is the bytes a host sends. */
+/** What daran_hal.h promises the HAL about one call (property ids of the
+ * build and not left out, no write of a read-only row, finite floats, 0/1
+ * bools, valid move kinds and actions, moves only when @p may_move, if
+ * @p state_known): NULL when @p call keeps it, else what it breaks. */
+struct daran_call; /* daran_recorder.h */
+const char *daran_fuzz_call_problem(const struct daran_call *call, bool state_known, bool may_move);
+
+/** Whether the options header leaves @p prop out (DARAN_OMIT_PROPERTIES). */
+bool daran_fuzz_prop_omitted(daran_prop_t prop);
+
+/** The row of the build at CAN address @p address (not 0, not left out). */
+bool daran_fuzz_can_row(uint32_t address, daran_prop_t *prop);
+
+/** The CAN type code of @p prop's row: f32 0, u32 and bool 3, s32 4. */
+unsigned daran_fuzz_can_type_code(daran_prop_t prop);
+
+/** Built-in seeds of the CAN fuzz target (frames the vendor's clients send,
+ * and the settings that wake the heartbeat and the node guard): seed
+ * @p index into @p out (room for @p cap bytes); its length, 0 past the
+ * last. */
+size_t daran_fuzz_can_seed(size_t index, uint8_t *out, size_t cap);
+
+#define DARAN_FUZZ_CAN_RECORD 12u
+
+/** The libFuzzer entry point: @p data is the bytes a host sends (the CAN
+ * target: records of DARAN_FUZZ_CAN_RECORD bytes, fuzz_can_target.c). */
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 #ifdef __cplusplus

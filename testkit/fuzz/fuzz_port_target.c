@@ -49,31 +49,6 @@
 #define DARAN_FUZZ_REPLY_LINES_MAX ((size_t)DARAN_PROP_COUNT + 64u + 255u)
 #endif
 
-/* What the build's table says of each property (daran_properties.h and the
- * port's rows in its options header), read here from the public list. */
-typedef struct prop_row {
-    bool writable;
-    daran_prop_type_t type;
-} prop_row_t;
-
-#define DARAN_FUZZ_WRITABLE_RW true
-#define DARAN_FUZZ_WRITABLE_RO false
-#define DARAN_FUZZ_ROW(id, path, scope, type, access, range, unit, can) \
-    [DARAN_PROP_##id] = {DARAN_FUZZ_WRITABLE_##access, DARAN_TYPE_##type},
-static const prop_row_t rows[DARAN_PROP_COUNT] = {
-    DARAN_PROPERTY_LIST(DARAN_FUZZ_ROW)
-#ifdef DARAN_PORT_PROPERTY_LIST
-    DARAN_PORT_PROPERTY_LIST(DARAN_FUZZ_ROW)
-#endif
-};
-
-#ifdef DARAN_OMIT_PROPERTIES
-#define DARAN_FUZZ_OMITTED(id) [DARAN_PROP_##id] = true,
-static const bool omitted[DARAN_PROP_COUNT] = {DARAN_OMIT_PROPERTIES(DARAN_FUZZ_OMITTED)};
-#else
-static const bool omitted[DARAN_PROP_COUNT] = {false};
-#endif
-
 /* The drive's state before a line, read through the port's own getters. */
 typedef struct before_line {
     bool id_known;
@@ -279,58 +254,13 @@ static void feed(harness_t *h, const void *bytes, size_t len)
 
 /* ---- the checks after a line ---- */
 
-static bool finite_move(const daran_move_t *m)
-{
-    return isfinite(m->pos_deg) && isfinite(m->vel_rpm) && isfinite(m->torque_nm) &&
-           isfinite(m->rate) && isfinite(m->kp) && isfinite(m->kd);
-}
-
 /* What daran_hal.h promises the HAL about one call. */
 static void check_promises(const daran_call_t *c, const before_line_t *before)
 {
-    switch (c->kind) {
-    case DARAN_CALL_GET:
-    case DARAN_CALL_SET:
-        if ((unsigned)c->prop >= (unsigned)DARAN_PROP_COUNT) {
-            violated("a HAL call for property id %d, outside the build's table", (int)c->prop);
-        }
-        if (omitted[c->prop]) {
-            violated("a HAL call for property id %d, which the options header leaves out",
-                     (int)c->prop);
-        }
-        if (c->kind == DARAN_CALL_GET) {
-            return;
-        }
-        if (!rows[c->prop].writable) {
-            violated("a set() of read-only property id %d", (int)c->prop);
-        }
-        if (rows[c->prop].type == DARAN_TYPE_F32 && !isfinite(c->value.f32)) {
-            violated("a set() of property id %d to a value that is not finite", (int)c->prop);
-        }
-        if (rows[c->prop].type == DARAN_TYPE_BOOL && c->value.u32 > 1u) {
-            violated("a set() of bool property id %d to %u", (int)c->prop,
-                     (unsigned)c->value.u32);
-        }
-        return;
-    case DARAN_CALL_MOVE:
-        if ((unsigned)c->move.kind > (unsigned)DARAN_MOVE_IMPEDANCE) {
-            violated("a move() of kind %d", (int)c->move.kind);
-        }
-        if (!finite_move(&c->move)) {
-            violated("a move() with a value that is not finite");
-        }
-        if (before->state_known && !before->may_move) {
-            violated("a move() while the drive was idle or had a blocking flag (the port's "
-                     "getters said so before the line)");
-        }
-        return;
-    case DARAN_CALL_ACTION:
-        if ((unsigned)c->action > (unsigned)DARAN_ACTION_NODE_GUARD) {
-            violated("an action() %d", (int)c->action);
-        }
-        return;
+    const char *problem = daran_fuzz_call_problem(c, before->state_known, before->may_move);
+    if (problem != NULL) {
+        violated("%s", problem);
     }
-    violated("a logged call of kind %d", (int)c->kind);
 }
 
 /* The phrase the core owes for a HAL refusal (D26: a result that is not a

@@ -11,7 +11,11 @@
  * crash. With --write-seeds, the recordings' seeds are written to DIR as
  * <recording name>-<n> instead of being run (libFuzzer's seed corpus).
  * Exit status 0 when every input ran and held every invariant (at least one
- * input), else 1; a violation or a sanitizer report aborts at once. */
+ * input), else 1; a violation or a sanitizer report aborts at once.
+ *
+ * Built for the CAN target (DARAN_FUZZ_CAN_TARGET), ARG may also be
+ * `--seeds`: the target's built-in seeds (daran_fuzz_can_seed()), which
+ * --write-seeds writes too; recordings (lines) do not apply to frames. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <signal.h>
@@ -224,11 +228,33 @@ static int replay_recording(const char *path)
     return failures;
 }
 
+#ifdef DARAN_FUZZ_CAN_TARGET
+static int builtin_seeds(void)
+{
+    static uint8_t seed[4096];
+    int failures = 0;
+    size_t len;
+    for (size_t n = 0; (len = daran_fuzz_can_seed(n, seed, sizeof seed)) > 0u; n++) {
+        if (seed_dir != NULL) {
+            failures += write_seed("can", (unsigned)n + 1u, (const char *)seed, len);
+        } else {
+            snprintf(input_name, sizeof input_name, "built-in seed %zu", n + 1u);
+            run_input(seed, len);
+        }
+    }
+    return failures;
+}
+#endif
+
 static int usage(const char *program)
 {
     fprintf(stderr,
             "usage: %s [--timeout SECONDS] [--write-seeds DIR] "
+#ifdef DARAN_FUZZ_CAN_TARGET
+            "(DIR | FILE | --seeds)...\n",
+#else
             "(DIR | FILE | --recording FILE)...\n",
+#endif
             program);
     return 2;
 }
@@ -257,6 +283,12 @@ int main(int argc, char **argv)
     sigaction(SIGABRT, &sa, NULL);
 
     for (int i = first; i < argc; i++) {
+#ifdef DARAN_FUZZ_CAN_TARGET
+        if (strcmp(argv[i], "--seeds") == 0) {
+            failures += builtin_seeds();
+            continue;
+        }
+#endif
         if (strcmp(argv[i], "--recording") == 0) {
             if (i + 1 >= argc) {
                 return usage(argv[0]);
@@ -287,10 +319,16 @@ int main(int argc, char **argv)
         return 1;
     }
     const daran_fuzz_totals_t *t = daran_fuzz_totals();
+#ifdef DARAN_FUZZ_CAN_TARGET
+    printf("%s: %zu inputs replayed, every invariant held: %zu frames, %zu to ignore, %zu for "
+           "another node, %zu with a setter, move or action call\n",
+           argv[0], inputs_run, t->lines, t->answered_error, t->other_drive, t->mutating);
+#else
     printf("%s: %zu inputs replayed, every invariant held: %zu request lines, %zu answered "
            "with an error, %zu for another drive, %zu with a setter, move or action call "
            "(%zu refused by the HAL)\n",
            argv[0], inputs_run, t->lines, t->answered_error, t->other_drive, t->mutating,
            t->refused);
+#endif
     return 0;
 }

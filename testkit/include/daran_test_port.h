@@ -39,6 +39,23 @@ typedef struct daran_test_port {
     const daran_port_command_t *commands;
     size_t command_count;
     void *commands_ctx;
+
+    /* ---- CAN (docs/can.md): all optional; without can_port the CAN
+     * requirements are reported as skipped and the CAN fuzz target refuses
+     * to run. ---- */
+
+    /** The port's CAN glue as daran_can_init() takes it: its transmit, its
+     * millisecond clock and its system hook, with @ref can_ctx. The suite
+     * owns the daran_can_t; it wraps send() to see every frame the drive
+     * sends, then hands the frame on (a false answer is reported). now_ms()
+     * must be the drive time that advance() lets pass. */
+    const daran_can_port_t *can_port;
+    void *can_ctx;
+    /** Optional (NULL: frames go to daran_can_receive() directly and the
+     * filter requirement is skipped): give @p frame to the drive as the bus
+     * would, through the port's acceptance filter and receive path into
+     * daran_can_receive(@p can, @p frame), with @ref can_ctx. */
+    void (*can_deliver)(void *ctx, daran_can_t *can, const daran_can_frame_t *frame);
 } daran_test_port_t;
 
 /** Defined by the adopter's test-port file; called once per program run.
