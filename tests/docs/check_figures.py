@@ -24,7 +24,8 @@ Figures and where they come from:
   conformance_requirements
                the requirements of the conformance suite (the conf_req enum of
                testkit/conformance/conformance.h); always measured. The
-               **C1**..**CN** list of docs/conformance.md must have as many.
+               **C1**..**CN** and **CAN1**..**CANM** lists of docs/conformance.md
+               must have as many as the enum has before and from REQ_CAN_FIRST.
   transcripts, fuzz_harnesses, broken_hals, broken_fuzz_ports
                the suites' own lists: tests/transcripts/*.txt with an .expected,
                tests/fuzz's _harnesses, tests/conformance's _breaches,
@@ -177,10 +178,19 @@ SOURCE_COUNTS = (
 )
 
 
-def conformance_requirements(root):
+def conformance_groups(root):
+    """(line requirements, CAN requirements) of the conf_req enum: the CAN
+    ones start at REQ_CAN_FIRST's value and are numbered CAN1.. apart."""
     text = open(os.path.join(root, "testkit", "conformance", "conformance.h"), encoding="utf-8").read()
     body = re.search(r"typedef enum conf_req \{(.*?)REQ_COUNT", text, re.S).group(1)
-    return len(re.findall(r"\bREQ_\w+\s*,", body))
+    names = re.findall(r"\b(REQ_\w+)\s*,", body)
+    first = re.search(r"#define REQ_CAN_FIRST (REQ_\w+)", text)
+    split = names.index(first.group(1)) if first else len(names)
+    return split, len(names) - split
+
+
+def conformance_requirements(root):
+    return sum(conformance_groups(root))
 
 
 class Measures:
@@ -280,7 +290,8 @@ def conformance_list(root, doc_path):
     text = open(doc_path, encoding="utf-8").read()
     m = re.search(r"^## The requirements\n(.*?)(?=^## )", text, re.S | re.M)
     section = m.group(1) if m else ""
-    return [int(n) for n in re.findall(r"^- \*\*C(\d+)\*\*", section, re.M)]
+    return ([int(n) for n in re.findall(r"^- \*\*C(\d+)\*\*", section, re.M)],
+            [int(n) for n in re.findall(r"^- \*\*CAN(\d+)\*\*", section, re.M)])
 
 
 # ---- the check ----
@@ -312,15 +323,18 @@ def check(root, docs, measures, allow):
             else:
                 checked.append("%s %s = %d" % (where, c.key, real))
         if doc == "docs/conformance.md":
-            listed = conformance_list(root, path)
-            want = list(range(1, measures.get("conformance_requirements") + 1))
-            if listed != want:
-                report(doc, 1, "C1..C%d" % (listed[-1] if listed else 0),
-                       "the requirements listed are %s, the suite has C1..C%d"
-                       % (listed and "C%d..C%d (%d bullets)" % (listed[0], listed[-1], len(listed)),
-                          want[-1]))
-            else:
-                checked.append("%s the list C1..C%d = conformance_requirements" % (doc, want[-1]))
+            for prefix, listed, count in zip(("C", "CAN"), conformance_list(root, path),
+                                             conformance_groups(root)):
+                want = list(range(1, count + 1))
+                if listed != want:
+                    report(doc, 1, "%s1..%s%d" % (prefix, prefix, listed[-1] if listed else 0),
+                           "the requirements listed are %s, the suite has %s1..%s%d"
+                           % (listed and "%s%d..%s%d (%d bullets)" % (prefix, listed[0], prefix,
+                                                                     listed[-1], len(listed)),
+                              prefix, prefix, count))
+                else:
+                    checked.append("%s the list %s1..%s%d = conformance requirements"
+                                   % (doc, prefix, prefix, count))
     for entry in allow:
         if entry[1] == "figure" and not entry[4] and os.path.join(root, entry[0]) in docs:
             findings.append("allow-list entry `%s figure %s` matches nothing any more; remove it"
