@@ -25,16 +25,8 @@ endforeach()
 # had on the build machine.
 set(_daran_config_header_name "")
 if(DARAN_CONFIG_HEADER)
-  set(_daran_config_header_path "${DARAN_CONFIG_HEADER}")
-  if(NOT IS_ABSOLUTE "${_daran_config_header_path}")
-    get_filename_component(_daran_config_header_path "${_daran_config_header_path}"
-                           ABSOLUTE BASE_DIR "${CMAKE_SOURCE_DIR}")
-  endif()
-  if(NOT EXISTS "${_daran_config_header_path}")
-    message(FATAL_ERROR "DARAN_CONFIG_HEADER: ${DARAN_CONFIG_HEADER} not found "
-                        "(give an absolute path, or one relative to ${CMAKE_SOURCE_DIR})")
-  endif()
-  get_filename_component(_daran_config_header_name "${_daran_config_header_path}" NAME)
+  # An absolute path here (cmake/DaranOptions.cmake resolved it).
+  get_filename_component(_daran_config_header_name "${DARAN_CONFIG_HEADER}" NAME)
   foreach(_h IN LISTS _daran_public_headers)
     get_filename_component(_hn "${_h}" NAME)
     if(_hn STREQUAL _daran_config_header_name)
@@ -44,7 +36,7 @@ if(DARAN_CONFIG_HEADER)
   endforeach()
   # src/CMakeLists.txt defines DARAN_CONFIG_HEADER: the path here, the file
   # name in the installed package.
-  install(FILES "${_daran_config_header_path}" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+  install(FILES "${DARAN_CONFIG_HEADER}" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 endif()
 
 # Options given as plain -D flags are baked into the library but reach no

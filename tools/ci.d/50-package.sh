@@ -8,6 +8,7 @@
 #      answers SameMajorVersion;
 #   3. an install built with a user options header (DARAN_CONFIG_HEADER) still
 #      agrees with its consumers, and one built with other options is refused;
+#      relative headers name files of the consumer's folders;
 #   4. seven daran_config.h configurations (defaults, the (b) and (c),
 #      the lower and the upper limits, discovery/telemetry/port commands/S-curve
 #      off, the seed-only header) each build the core and pass tests/config, and
@@ -146,6 +147,19 @@ step "consumer: built with other size options, daran_init() refuses it" \
 step "consumer: set(DARAN_CONFIG_HEADER ...) before add_subdirectory reaches the library (CMP0126 OLD)" \
   consumer_cmake tests/consumer/add_subdirectory "$work/consumer-subdir-c" -DDARAN_SOURCE_DIR="$repo" \
   -DCONSUMER_OPTIONS_HEADER="$repo/tests/config/config_c.h" -DCONSUMER_EXPECT_LINE_MAX=256
+
+# Relative options headers: DARAN_CONFIG_HEADER against the consumer's
+# top-level folder, daran_ascii_add_library(CONFIG_HEADER) against the folder
+# of its caller (the first used to be looked for under the library's src/).
+relative_headers() {
+  local build="$work/consumer-relative"
+  cmake -S tests/consumer/relative_header -B "$build" -DCMAKE_BUILD_TYPE=Release \
+    -DDARAN_SOURCE_DIR="$repo" &&
+    cmake --build "$build" "${jobs[@]}" &&
+    "$build/consumer_project_header" && "$build/app/consumer_app_header"
+}
+step "consumer: relative options headers, of the project's top folder and of the caller's folder" \
+  relative_headers
 
 # Same size, another property table: a program compiled with a header that
 # leaves a row out must be refused by the library built without it.
