@@ -65,12 +65,15 @@ configure_package_config_file(
   "${PROJECT_BINARY_DIR}/daran_asciiConfig.cmake"
   INSTALL_DESTINATION "${DARAN_INSTALL_CMAKEDIR}"
   PATH_VARS DARAN_INSTALL_DATADIR CMAKE_INSTALL_INCLUDEDIR CMAKE_INSTALL_BINDIR)
-# 0.x.y: SameMajorVersion accepts any 0.* for a request of 0.*; the version
-# file still refuses a library built for another pointer size (host vs MCU).
+# 0.x.y: SameMajorVersion accepts any 0.* for a request of 0.*. Any target:
+# a firmware project takes the functions that compile the core from the
+# installed sources for its own CPU; daran_asciiConfig.cmake gives the
+# prebuilt libraries only to a project built for the same system as they were.
 write_basic_package_version_file(
   "${PROJECT_BINARY_DIR}/daran_asciiConfigVersion.cmake"
   VERSION "${PROJECT_VERSION}"
-  COMPATIBILITY SameMajorVersion)
+  COMPATIBILITY SameMajorVersion
+  ARCH_INDEPENDENT)
 install(FILES
   "${PROJECT_BINARY_DIR}/daran_asciiConfig.cmake"
   "${PROJECT_BINARY_DIR}/daran_asciiConfigVersion.cmake"
@@ -91,6 +94,11 @@ foreach(_module IN ITEMS DaranAddLibrary DaranSim DaranTestSupport DaranConforma
   endif()
 endforeach()
 install(FILES ${_daran_modules} DESTINATION "${DARAN_INSTALL_CMAKEDIR}")
+# The toolchain files of the Arm presets, for a firmware project's own
+# configure: --toolchain <prefix>/share/daran_ascii/toolchains/cortex-m4.cmake.
+file(GLOB _daran_toolchains "${PROJECT_SOURCE_DIR}/cmake/cortex-m*.cmake")
+install(FILES "${PROJECT_SOURCE_DIR}/cmake/arm-none-eabi.cmake" ${_daran_toolchains}
+        DESTINATION "${DARAN_INSTALL_DATADIR}/toolchains")
 
 # The line recorder and the replay tool (docs/recording.md): daran-record sits
 # between a client and a real drive, daran-replay plays a recording into
