@@ -155,7 +155,7 @@ relative_headers() {
   local build="$work/consumer-relative"
   cmake -S tests/consumer/relative_header -B "$build" -DCMAKE_BUILD_TYPE=Release \
     -DDARAN_SOURCE_DIR="$repo" &&
-    cmake --build "$build" "${jobs[@]}" &&
+    cmake --build "$build" "${jobs[@]}" --target consumer_project_header consumer_app_header &&
     "$build/consumer_project_header" && "$build/app/consumer_app_header"
 }
 step "consumer: relative options headers, of the project's top folder and of the caller's folder" \
