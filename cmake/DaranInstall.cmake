@@ -25,16 +25,8 @@ endforeach()
 # had on the build machine.
 set(_daran_config_header_name "")
 if(DARAN_CONFIG_HEADER)
-  set(_daran_config_header_path "${DARAN_CONFIG_HEADER}")
-  if(NOT IS_ABSOLUTE "${_daran_config_header_path}")
-    get_filename_component(_daran_config_header_path "${_daran_config_header_path}"
-                           ABSOLUTE BASE_DIR "${CMAKE_SOURCE_DIR}")
-  endif()
-  if(NOT EXISTS "${_daran_config_header_path}")
-    message(FATAL_ERROR "DARAN_CONFIG_HEADER: ${DARAN_CONFIG_HEADER} not found "
-                        "(give an absolute path, or one relative to ${CMAKE_SOURCE_DIR})")
-  endif()
-  get_filename_component(_daran_config_header_name "${_daran_config_header_path}" NAME)
+  # An absolute path here (cmake/DaranOptions.cmake resolved it).
+  get_filename_component(_daran_config_header_name "${DARAN_CONFIG_HEADER}" NAME)
   foreach(_h IN LISTS _daran_public_headers)
     get_filename_component(_hn "${_h}" NAME)
     if(_hn STREQUAL _daran_config_header_name)
@@ -44,7 +36,7 @@ if(DARAN_CONFIG_HEADER)
   endforeach()
   # src/CMakeLists.txt defines DARAN_CONFIG_HEADER: the path here, the file
   # name in the installed package.
-  install(FILES "${_daran_config_header_path}" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+  install(FILES "${DARAN_CONFIG_HEADER}" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 endif()
 
 # Options given as plain -D flags are baked into the library but reach no
@@ -73,12 +65,15 @@ configure_package_config_file(
   "${PROJECT_BINARY_DIR}/daran_asciiConfig.cmake"
   INSTALL_DESTINATION "${DARAN_INSTALL_CMAKEDIR}"
   PATH_VARS DARAN_INSTALL_DATADIR CMAKE_INSTALL_INCLUDEDIR CMAKE_INSTALL_BINDIR)
-# 0.x.y: SameMajorVersion accepts any 0.* for a request of 0.*; the version
-# file still refuses a library built for another pointer size (host vs MCU).
+# 0.x.y: SameMajorVersion accepts any 0.* for a request of 0.*. Any target:
+# a firmware project takes the functions that compile the core from the
+# installed sources for its own CPU; daran_asciiConfig.cmake gives the
+# prebuilt libraries only to a project built for the same system as they were.
 write_basic_package_version_file(
   "${PROJECT_BINARY_DIR}/daran_asciiConfigVersion.cmake"
   VERSION "${PROJECT_VERSION}"
-  COMPATIBILITY SameMajorVersion)
+  COMPATIBILITY SameMajorVersion
+  ARCH_INDEPENDENT)
 install(FILES
   "${PROJECT_BINARY_DIR}/daran_asciiConfig.cmake"
   "${PROJECT_BINARY_DIR}/daran_asciiConfigVersion.cmake"
@@ -99,6 +94,11 @@ foreach(_module IN ITEMS DaranAddLibrary DaranSim DaranTestSupport DaranConforma
   endif()
 endforeach()
 install(FILES ${_daran_modules} DESTINATION "${DARAN_INSTALL_CMAKEDIR}")
+# The toolchain files of the Arm presets, for a firmware project's own
+# configure: --toolchain <prefix>/share/daran_ascii/toolchains/cortex-m4.cmake.
+file(GLOB _daran_toolchains "${PROJECT_SOURCE_DIR}/cmake/cortex-m*.cmake")
+install(FILES "${PROJECT_SOURCE_DIR}/cmake/arm-none-eabi.cmake" ${_daran_toolchains}
+        DESTINATION "${DARAN_INSTALL_DATADIR}/toolchains")
 
 # The line recorder and the replay tool (docs/recording.md): daran-record sits
 # between a client and a real drive, daran-replay plays a recording into

@@ -21,7 +21,23 @@ option(DARAN_SANITIZE "Build everything with AddressSanitizer and UndefinedBehav
 if(POLICY CMP0126)
   cmake_policy(SET CMP0126 NEW)
 endif()
-set(DARAN_CONFIG_HEADER "${DARAN_CONFIG_HEADER}" CACHE STRING "A user options header included by daran_config.h")
+set(DARAN_CONFIG_HEADER "${DARAN_CONFIG_HEADER}" CACHE STRING
+    "A user options header included by daran_config.h (absolute, or relative to the top-level source folder)")
+# A relative header names a file of the project being configured: the
+# top-level source folder (CMAKE_SOURCE_DIR: this tree for its own presets, the
+# consumer's for a project that adds this tree with add_subdirectory()), not
+# the folder that happens to use it (src/, tests/...). The absolute path, as a
+# normal variable of this tree's scope, is what every folder below sees.
+if(DARAN_CONFIG_HEADER)
+  get_filename_component(_daran_config_header "${DARAN_CONFIG_HEADER}" ABSOLUTE
+                         BASE_DIR "${CMAKE_SOURCE_DIR}")
+  if(NOT EXISTS "${_daran_config_header}")
+    message(FATAL_ERROR "DARAN_CONFIG_HEADER: ${DARAN_CONFIG_HEADER} not found (looked for "
+                        "${_daran_config_header}; give an absolute path, or one relative to "
+                        "the top-level source folder ${CMAKE_SOURCE_DIR})")
+  endif()
+  set(DARAN_CONFIG_HEADER "${_daran_config_header}")
+endif()
 set(DARAN_PROPERTY_OMIT "${DARAN_PROPERTY_OMIT}" CACHE STRING "Property ids (DARAN_PROP_<ID> without the prefix) this build leaves out; their paths answer invalid property")
 
 if(DARAN_SANITIZE)
