@@ -1226,7 +1226,8 @@ static uint64_t mono_ns(void)
  * POSIX wait with a timespec, so the loop wakes for a tick or a frame's
  * end to the microsecond, not rounded up to poll()'s milliseconds. Only
  * POLLIN and POLLOUT are asked for and reported (a hang-up reads as
- * readable). */
+ * readable). -1 with EBADF for a descriptor an fd_set cannot hold (the
+ * program's few are far below FD_SETSIZE). */
 static int poll_ns(struct pollfd *pfd, size_t n, uint64_t timeout_ns)
 {
     fd_set rd;
@@ -1237,6 +1238,12 @@ static int poll_ns(struct pollfd *pfd, size_t n, uint64_t timeout_ns)
     size_t k;
     FD_ZERO(&rd);
     FD_ZERO(&wr);
+    for (k = 0; k < n; k++) {
+        if (pfd[k].fd >= FD_SETSIZE) {
+            errno = EBADF;
+            return -1;
+        }
+    }
     for (k = 0; k < n; k++) {
         if (pfd[k].fd >= 0 && (pfd[k].events & POLLIN) != 0) {
             FD_SET(pfd[k].fd, &rd);
