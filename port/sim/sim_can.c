@@ -19,12 +19,19 @@ static uint32_t port_now_ms(void *ctx)
 
 const daran_can_port_t daran_sim_can_port = {port_send, port_now_ms, NULL};
 
-/* The bus hands a frame to a drive's controller: into its receive ring. */
+/* The bus hands a frame to a drive's controller: into its receive ring,
+ * and the drive runs it at once, as a firmware that polls its front end
+ * from the receive interrupt's wake-up (or a main loop far faster than the
+ * bus) does; its answer is queued now, on the bus's clock at the frame's
+ * end, and ready after the drive's processing time. */
 static void deliver_to_drive(void *ctx, const daran_can_frame_t *frame, uint64_t end_ns)
 {
     const daran_sim_can_port_ctx_t *port = ctx;
+    daran_can_t *front = &port->owner->front[port->index];
     (void)end_ns;
-    (void)daran_can_receive(&port->owner->front[port->index], frame);
+    if (daran_can_receive(front, frame)) {
+        (void)daran_can_poll(front);
+    }
 }
 
 static daran_result_t start_front_end(daran_sim_can_t *can, uint32_t index)
@@ -75,6 +82,7 @@ daran_result_t daran_sim_can_attach(daran_sim_can_t *can, daran_sim_bus_t *line)
         can->port_ctx[i].owner = can;
         can->port_ctx[i].index = i;
         (void)daran_sim_can_bus_add_node(&can->wire, deliver_to_drive, &can->port_ctx[i]);
+        daran_sim_can_bus_set_send_delay(&can->wire, i, DARAN_SIM_CAN_DRIVE_DELAY_NS);
         if (start_front_end(can, i) != DARAN_OK) {
             return DARAN_ERR_BAD_ARGUMENT;
         }
@@ -90,12 +98,12 @@ void daran_sim_can_tick(daran_sim_can_t *can)
 {
     daran_sim_bus_t *line = can->line;
     uint32_t i;
+    /* the frames of the tick ran as they arrived, on the state its start
+     * left, as an ASCII line between two ticks does: the tick acts on them */
+    (void)daran_sim_can_bus_run(&can->wire, daran_sim_can_tick_ns(line, line->ticks + 1u));
     daran_sim_bus_tick(line);
-    /* what crossed the bus during the tick runs at its end, as an ASCII line
-     * does: its effect starts with the next tick */
-    (void)daran_sim_can_bus_run(&can->wire, daran_sim_can_tick_ns(line, line->ticks));
     for (i = 0; i < line->count; i++) {
-        (void)daran_can_poll(&can->front[i]);
+        (void)daran_can_poll(&can->front[i]); /* the heartbeat, the node guard */
     }
 }
 

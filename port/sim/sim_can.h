@@ -7,15 +7,16 @@
  *
  * Drive i (0-based, as in line->node[i]) is node i of the bus; host
  * adapters join after them with daran_sim_can_bus_add_node(&can->wire, ...)
- * and send with daran_sim_can_bus_send(). One control tick
- * (daran_sim_can_tick()) is the line's tick (models, telemetry), then the
- * bus running through the same tick (frames land in the rings as a receive
- * interrupt would put them there meanwhile), then each front end's
- * daran_can_poll() at the tick's end (frames run, replies queued at that
- * time): the main loop of the example in docs/can.md, once per tick. A
- * frame queued at a tick's end therefore crosses the bus during the next
- * tick, runs at its end, and takes effect from the tick after, as an ASCII
- * line that arrives between two ticks does.
+ * and send with daran_sim_can_bus_send(). A drive runs each frame when its
+ * last bit has passed (daran_can_receive() and daran_can_poll() at once),
+ * so its answer is queued at that time and ready
+ * DARAN_SIM_CAN_DRIVE_DELAY_NS later, whatever the tick rate. One control
+ * tick (daran_sim_can_tick()) is the bus running through the tick (frames
+ * run as they arrive, on the state the tick's start left, as ASCII lines
+ * between two ticks do), then the line's tick (models, telemetry), which
+ * acts on them, then each front end's daran_can_poll() at the tick's end
+ * (the heartbeat, the node guard). The bus may also be run to a time
+ * inside a tick (daran_sim_can_bus_run()), as a real-time loop does.
  *
  * The front ends need a core built with DARAN_ENABLE_CAN (the default).
  * Portable C99: no stdio, no heap; the caller owns the object. */
@@ -56,6 +57,12 @@ struct daran_sim_can {
     void *front_end_ctx;
 };
 
+/* A drive's processing time, from a frame's last bit to its answer being
+ * ready for the wire: a main loop pass of the firmware that takes the frame
+ * from the receive ring and runs it (a read takes under 400 instructions on
+ * a Cortex-M4, docs/performance.md: a few microseconds). */
+#define DARAN_SIM_CAN_DRIVE_DELAY_NS 10000u
+
 /* The port every front end is given: send queues on the drive's node,
  * now_ms reads the bus's clock, no system hook. */
 extern const daran_can_port_t daran_sim_can_port;
@@ -75,9 +82,9 @@ DARAN_NODISCARD daran_result_t daran_sim_can_attach(daran_sim_can_t *can, daran_
  * one a power cycle initialises again; NULL stops that. */
 void daran_sim_can_on_front_end(daran_sim_can_t *can, daran_sim_front_end_fn fn, void *ctx);
 
-/* One control tick of the line with its CAN bus: daran_sim_bus_tick(), the
- * bus runs to the end of the tick, every front end polls. Call it instead
- * of daran_sim_bus_tick(). */
+/* One control tick of the line with its CAN bus: the bus runs to the end
+ * of the tick, then daran_sim_bus_tick(), then every front end polls. Call
+ * it instead of daran_sim_bus_tick(). */
 void daran_sim_can_tick(daran_sim_can_t *can);
 
 /* The simulated time of @p ticks control ticks of @p line, in nanoseconds. */

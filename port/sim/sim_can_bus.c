@@ -131,10 +131,18 @@ uint32_t daran_sim_can_bus_room(const daran_sim_can_bus_t *bus, uint32_t node)
     return n->bus_off ? 0u : DARAN_SIM_CAN_TX_FRAMES - n->queued;
 }
 
+void daran_sim_can_bus_set_send_delay(daran_sim_can_bus_t *bus, uint32_t node, uint64_t delay_ns)
+{
+    if (node < bus->count) {
+        bus->node[node].send_delay_ns = delay_ns;
+    }
+}
+
 bool daran_sim_can_bus_send(daran_sim_can_bus_t *bus, uint32_t node,
                             const daran_can_frame_t *frame)
 {
     daran_sim_can_node_t *n;
+    uint32_t slot;
     if (node >= bus->count) {
         return false;
     }
@@ -146,7 +154,9 @@ bool daran_sim_can_bus_send(daran_sim_can_bus_t *bus, uint32_t node,
     if (n->mute) {
         return true; /* taken, and never seen on the wire */
     }
-    n->queue[(n->head + n->queued) % DARAN_SIM_CAN_TX_FRAMES] = *frame;
+    slot = (n->head + n->queued) % DARAN_SIM_CAN_TX_FRAMES;
+    n->queue[slot] = *frame;
+    n->ready_ns[slot] = bus->now_ns + n->send_delay_ns;
     n->queued++;
     return true;
 }
@@ -186,8 +196,34 @@ static bool on_bus(const daran_sim_can_node_t *n)
     return !n->unplugged && !n->bus_off;
 }
 
-/* The node whose oldest frame wins the arbitration; count when none. */
-static uint32_t winner(const daran_sim_can_bus_t *bus)
+/* Whether node @p n has a frame for the wire: queued, and the node on the bus. */
+static bool offers(const daran_sim_can_node_t *n)
+{
+    return n->queued > 0u && on_bus(n);
+}
+
+/* When the idle wire can next start a frame: from free_ns, or as soon as
+ * the first oldest frame of a node becomes ready; UINT64_MAX when no node
+ * offers one. */
+static uint64_t next_start(const daran_sim_can_bus_t *bus)
+{
+    uint64_t start = UINT64_MAX;
+    uint32_t i;
+    for (i = 0; i < bus->count; i++) {
+        const daran_sim_can_node_t *n = &bus->node[i];
+        if (offers(n) && n->ready_ns[n->head] < start) {
+            start = n->ready_ns[n->head];
+        }
+    }
+    if (start != UINT64_MAX && start < bus->free_ns) {
+        start = bus->free_ns;
+    }
+    return start;
+}
+
+/* The node whose oldest frame, ready by @p start_ns, wins the arbitration;
+ * count when none. */
+static uint32_t winner(const daran_sim_can_bus_t *bus, uint64_t start_ns)
 {
     uint32_t best = bus->count;
     uint64_t best_key = 0u;
@@ -195,7 +231,7 @@ static uint32_t winner(const daran_sim_can_bus_t *bus)
     for (i = 0; i < bus->count; i++) {
         const daran_sim_can_node_t *n = &bus->node[i];
         uint64_t key;
-        if (n->queued == 0u || !on_bus(n)) {
+        if (!offers(n) || n->ready_ns[n->head] > start_ns) {
             continue;
         }
         key = arbitration_key(&n->queue[n->head]);
@@ -213,11 +249,13 @@ static uint64_t frame_ns(const daran_sim_can_bus_t *bus, const daran_can_frame_t
            bus->bit_rate;
 }
 
-/* The frame on the wire has ended: every other node on the bus gets it. */
+/* The frame on the wire has ended: every other node on the bus gets it,
+ * at its end (what they send meanwhile is queued then). */
 static void deliver(daran_sim_can_bus_t *bus)
 {
     uint32_t i;
     bus->on_wire = false;
+    bus->now_ns = bus->wire_end_ns;
     if (bus->wire_lost || bus->bus_off) {
         return;
     }
@@ -264,7 +302,7 @@ uint32_t daran_sim_can_bus_run(daran_sim_can_bus_t *bus, uint64_t until_ns)
         bus->free_ns = bus->now_ns;
     }
     for (;;) {
-        uint32_t node;
+        uint64_t start;
         if (bus->on_wire) {
             if (bus->wire_end_ns > until_ns) {
                 break;
@@ -273,17 +311,32 @@ uint32_t daran_sim_can_bus_run(daran_sim_can_bus_t *bus, uint64_t until_ns)
             done++;
             continue;
         }
-        if (bus->bus_off || bus->free_ns >= until_ns) {
+        start = next_start(bus);
+        if (bus->bus_off || start >= until_ns) {
             break;
         }
-        node = winner(bus);
-        if (node == bus->count) {
-            break;
-        }
-        transmit(bus, node, bus->free_ns);
+        transmit(bus, winner(bus, start), start);
     }
     bus->now_ns = until_ns;
     return done;
+}
+
+uint64_t daran_sim_can_bus_next_ns(const daran_sim_can_bus_t *bus)
+{
+    uint64_t start;
+    uint32_t node;
+    if (bus->on_wire) {
+        return bus->wire_end_ns;
+    }
+    start = next_start(bus);
+    if (bus->bus_off || start == UINT64_MAX) {
+        return UINT64_MAX;
+    }
+    if (start < bus->now_ns) {
+        start = bus->now_ns; /* queued since the last run: not in the past */
+    }
+    node = winner(bus, start);
+    return start + frame_ns(bus, &bus->node[node].queue[bus->node[node].head]);
 }
 
 /* ---- faults ---- */

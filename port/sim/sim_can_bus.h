@@ -12,8 +12,8 @@
  * intermission. At 1 Mbit/s a standard 8-byte data frame takes 111 to 135
  * microseconds (daran_sim_can_frame_bits()).
  *
- * Arbitration. Whenever the wire is idle, every node presents the oldest
- * frame of its queue (a node's queue is first in, first out, as an
+ * Arbitration. Whenever the wire is idle, every node whose oldest frame
+ * is ready presents it (a node's queue is first in, first out, as an
  * adapter's or a controller's FIFO mode keeps its frames in order) and the
  * one with the lowest identifier wins, as the dominant bits decide on a real
  * bus: a standard identifier beats an extended one with the same first
@@ -22,11 +22,16 @@
  * a real bus) go in node order.
  *
  * Time is the caller's: daran_sim_can_bus_run() moves the bus to a time
- * (the end of a control tick), putting on the wire whatever the queues hold
- * and delivering every frame whose last bit has passed. Frames queued with
- * daran_sim_can_bus_send() compete from the bus's current time. A frame
- * reaches every other node that is on the bus, never its sender (no
- * loopback); no acknowledgement errors are modelled.
+ * (the end of a control tick, or any time between), putting on the wire
+ * whatever the queues hold and delivering every frame whose last bit has
+ * passed, at that time: the bus's clock (now_ns) reads the frame's end
+ * while the receivers' callbacks run, so what they send in answer is queued
+ * then, and goes out in the same run when its time comes. A frame queued
+ * with daran_sim_can_bus_send() is ready to compete from the bus's current
+ * time plus its node's send delay (a drive's own processing time,
+ * daran_sim_can_bus_set_send_delay(); 0 for a new node). A frame reaches
+ * every other node that is on the bus, never its sender (no loopback); no
+ * acknowledgement errors are modelled.
  *
  * Portable C99: no stdio, no heap; the caller owns the bus object. Nothing
  * here is thread-safe. */
@@ -82,8 +87,10 @@ typedef struct daran_sim_can_node {
     daran_sim_can_deliver_fn deliver; /* NULL: the node receives nothing */
     void *ctx;
     daran_can_frame_t queue[DARAN_SIM_CAN_TX_FRAMES]; /* waiting to go on the wire */
+    uint64_t ready_ns[DARAN_SIM_CAN_TX_FRAMES];         /* when each may compete */
     uint32_t head;                                      /* the oldest, queue[head] */
     uint32_t queued;
+    uint64_t send_delay_ns; /* from a send to its frame being ready */
     uint32_t lose;       /* frames still to lose of those it sends */
     bool mute;
     bool unplugged;
@@ -118,6 +125,11 @@ void daran_sim_can_bus_init(daran_sim_can_bus_t *bus, uint32_t bit_rate, uint64_
 uint32_t daran_sim_can_bus_add_node(daran_sim_can_bus_t *bus, daran_sim_can_deliver_fn deliver,
                                     void *ctx);
 
+/* Frames node @p node sends from now on are ready @p delay_ns after the
+ * send (a drive's processing time between a frame's arrival and its
+ * answer's transmission); nothing for a node that does not exist. */
+void daran_sim_can_bus_set_send_delay(daran_sim_can_bus_t *bus, uint32_t node, uint64_t delay_ns);
+
 /* Node @p node hands its controller @p frame, at the bus's current time.
  * True when the controller took it (a mute node's frame is taken and
  * vanishes); false when the node or the bus is bus-off or its queue is full
@@ -130,10 +142,20 @@ bool daran_sim_can_bus_send(daran_sim_can_bus_t *bus, uint32_t node,
 uint32_t daran_sim_can_bus_room(const daran_sim_can_bus_t *bus, uint32_t node);
 
 /* Run the bus up to @p until_ns (an earlier time changes nothing): frames
- * go on the wire in arbitration order, and each one whose last bit passes
- * by then is delivered to every other node on the bus, in node order.
+ * go on the wire in arbitration order as they become ready (a frame ready
+ * exactly at @p until_ns waits for the next run, so every frame ready then
+ * competes), and each one whose last bit passes by then is delivered to
+ * every other node on the bus, in node order, with the bus's clock at its
+ * end.
  * Returns how many frames were delivered or lost. O(frames x nodes). */
 uint32_t daran_sim_can_bus_run(daran_sim_can_bus_t *bus, uint64_t until_ns);
+
+/* When the next frame's last bit passes, as the queues stand now (a frame
+ * queued meanwhile may win the wire first): the end of the frame on the
+ * wire, else of the frame the idle wire will carry next; UINT64_MAX when
+ * nothing is on the wire or ready to go on it (queues empty, or their
+ * nodes off the bus). A real-time loop sleeps until then. O(nodes). */
+uint64_t daran_sim_can_bus_next_ns(const daran_sim_can_bus_t *bus);
 
 /* Inject @p fault on node @p node, or with DARAN_SIM_CAN_ANY_NODE on the
  * bus as a whole: LOSE loses the next @p count frames anyone sends (0

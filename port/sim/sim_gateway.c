@@ -23,7 +23,7 @@ bool sim_gateway_busy(const sim_gateway_t *gw)
     return gw->on && daran_can_bridge_busy(&gw->bridge);
 }
 
-void sim_gateway_after_tick(const sim_gateway_t *gw, daran_sim_bus_t *bus)
+void sim_gateway_after_run(const sim_gateway_t *gw, daran_sim_bus_t *bus)
 {
     uint32_t i;
     if (!gw->on) {

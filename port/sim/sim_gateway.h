@@ -2,7 +2,7 @@
  * (daran_can_bridge_t, docs/can.md "The bridge"). The ASCII link reaches it
  * alone; its lines for other ids travel through its bridge to the drives on
  * the simulated CAN bus, and their answers come back through its CAN front
- * end's poll at a tick's end. The other drives have no ASCII link: what
+ * end as each reply frame arrives (sim_can.h). The other drives have no ASCII link: what
  * they write (telemetry set over CAN) goes nowhere, as a real drive's
  * unplugged UART.
  *
@@ -35,10 +35,11 @@ void sim_gateway_start(sim_gateway_t *gw, daran_sim_can_t *can);
  * the link's next line waits meanwhile. */
 bool sim_gateway_busy(const sim_gateway_t *gw);
 
-/* After a control tick, as the gateway's main loop goes on: daran_poll()
- * takes what its ring holds, and what the drives without a link wrote is
- * dropped before it is collected. Nothing without --bridge. */
-void sim_gateway_after_tick(const sim_gateway_t *gw, daran_sim_bus_t *bus);
+/* After the bus ran (a control tick, or a part of one), as the gateway's
+ * main loop goes on: daran_poll() takes what its ring holds, and what the
+ * drives without a link wrote is dropped before it is collected. Nothing
+ * without --bridge. */
+void sim_gateway_after_run(const sim_gateway_t *gw, daran_sim_bus_t *bus);
 
 /* The most control ticks at @p tick_hz that one bridged line can wait: a
  * timeout (and a millisecond) for each of its reads, and a tick to spare. */

@@ -21,12 +21,16 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/select.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/time.h>
 #include <termios.h>
 #include <time.h>
 #include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 
 #include "daran_sim.h"
 #include "sim_can_pty.h"
@@ -656,41 +660,72 @@ static void collect(daran_sim_sink_fn sink, const char *what, size_t what_len)
     report_lost();
 }
 
-/* Telemetry reports leave after the tick that made them, so they interleave
- * with replies in time order; they are no collision (protocol.md 11.2:
+/* What the drives wrote while a tick (or the bus) ran goes out. Telemetry
+ * reports leave after the tick that made them, so they interleave with
+ * replies in time order; they are no collision (protocol.md 11.2:
  * streaming is for point-to-point links). So does the gateway's answer to a
- * bridged query, to the input that asked. A signal stops the run between
- * two ticks. */
+ * bridged query, to the input that asked (it waited for it: @p answering). */
+static void hand_out(bool answering)
+{
+    if (daran_sim_bus_collect(&app.bus, answering ? app.asker : app.pty ? sink_pty : sink_stdout,
+                              NULL) > 0u) {
+        report_lost();
+    }
+}
+
+/* @p n control ticks; a signal stops the run between two ticks. */
 static void run_ticks(uint64_t n)
 {
     uint64_t k;
     for (k = 0; k < n && stop_signal == 0; k++) {
         bool answering = sim_gateway_busy(&app.gateway);
         if (app.can_on) {
-            daran_sim_can_tick(&app.can); /* the bus, the front ends, then the line's tick */
-            sim_gateway_after_tick(&app.gateway, &app.bus);
+            daran_sim_can_tick(&app.can); /* the bus, the line's tick, the front ends */
+            sim_gateway_after_run(&app.gateway, &app.bus);
             report_can();
         } else {
             daran_sim_bus_tick(&app.bus);
         }
         trace_row();
-        if (daran_sim_bus_collect(&app.bus, answering ? app.asker : app.pty ? sink_pty : sink_stdout,
-                                  NULL) > 0u) {
-            report_lost();
-        }
+        hand_out(answering);
+    }
+}
+
+/* The simulated time of the next control tick, in nanoseconds. */
+static uint64_t next_tick_ns(void)
+{
+    return daran_sim_can_tick_ns(&app.bus, app.bus.ticks + 1u);
+}
+
+/* --can: the bus alone runs on to @p sim_ns, inside the current tick (the
+ * drives answer the frames that end by then); what that made goes out as
+ * a tick's output does. */
+static void run_bus(uint64_t sim_ns)
+{
+    bool answering = sim_gateway_busy(&app.gateway);
+    if (app.can_on && daran_sim_can_bus_run(&app.can.wire, sim_ns) > 0u) {
+        sim_gateway_after_run(&app.gateway, &app.bus);
+        report_can();
+        hand_out(answering);
     }
 }
 
 /* Lock-step --bridge: the line just sent left a query waiting; simulated
- * time runs until its answer (or `error: no reply`) has come, so answers
- * keep the order of the lines and the bus's time shows. */
+ * time runs, frame by frame inside a tick and tick by tick, until its
+ * answer (or `error: no reply`) has come, so answers keep the order of the
+ * lines and come in the bus's time, which the `can` lines show. */
 static void wait_for_gateway(void)
 {
     uint64_t limit = sim_gateway_wait_limit(app.bus.tick_hz);
     uint64_t ticks = 0u;
     while (sim_gateway_busy(&app.gateway) && ticks < limit && stop_signal == 0) {
-        run_ticks(1u);
-        ticks++;
+        uint64_t frame_end = daran_sim_can_bus_next_ns(&app.can.wire);
+        if (frame_end < next_tick_ns()) {
+            run_bus(frame_end);
+        } else {
+            run_ticks(1u);
+            ticks++;
+        }
     }
     if (sim_gateway_busy(&app.gateway) && stop_signal == 0) {
         complain("drive 1's bridge still waits after %" PRIu64 " ticks (more than its timeouts)",
@@ -1180,13 +1215,104 @@ static bool wants_input(const line_source_t *s, const held_input_t *in)
     return in->pos == in->len && may_take_line(s);
 }
 
+static uint64_t mono_ns(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (uint64_t)ts.tv_sec * 1000000000u + (uint64_t)ts.tv_nsec;
+}
+
+/* poll() with a timeout in nanoseconds (UINT64_MAX: none): pselect(), the
+ * POSIX wait with a timespec, so the loop wakes for a tick or a frame's
+ * end to the microsecond, not rounded up to poll()'s milliseconds. Only
+ * POLLIN and POLLOUT are asked for and reported (a hang-up reads as
+ * readable). -1 with EBADF for a descriptor an fd_set cannot hold (the
+ * program's few are far below FD_SETSIZE). */
+static int poll_ns(struct pollfd *pfd, size_t n, uint64_t timeout_ns)
+{
+    fd_set rd;
+    fd_set wr;
+    struct timespec ts;
+    int top = -1;
+    int r;
+    size_t k;
+    FD_ZERO(&rd);
+    FD_ZERO(&wr);
+    for (k = 0; k < n; k++) {
+        if (pfd[k].fd >= FD_SETSIZE) {
+            errno = EBADF;
+            return -1;
+        }
+    }
+    for (k = 0; k < n; k++) {
+        if (pfd[k].fd >= 0 && (pfd[k].events & POLLIN) != 0) {
+            FD_SET(pfd[k].fd, &rd);
+        }
+        if (pfd[k].fd >= 0 && (pfd[k].events & POLLOUT) != 0) {
+            FD_SET(pfd[k].fd, &wr);
+        }
+        if (pfd[k].fd > top && (pfd[k].events & (POLLIN | POLLOUT)) != 0) {
+            top = pfd[k].fd;
+        }
+    }
+    ts.tv_sec = (time_t)(timeout_ns / 1000000000u);
+    ts.tv_nsec = (long)(timeout_ns % 1000000000u);
+    r = pselect(top + 1, &rd, &wr, NULL, timeout_ns == UINT64_MAX ? NULL : &ts, NULL);
+    for (k = 0; k < n; k++) {
+        pfd[k].revents = 0;
+        if (r > 0 && pfd[k].fd >= 0 && FD_ISSET(pfd[k].fd, &rd)) {
+            pfd[k].revents |= POLLIN;
+        }
+        if (r > 0 && pfd[k].fd >= 0 && FD_ISSET(pfd[k].fd, &wr)) {
+            pfd[k].revents |= POLLOUT;
+        }
+    }
+    return r;
+}
+
+/* Real time: simulated time t runs at the clock's pace from origin_ns
+ * (the clock's reading at simulated time 0). */
+static uint64_t origin_ns;
+
+/* Simulated time catches up with the clock: the ticks that are due, then
+ * the CAN bus to the present (the drives answer every frame that has
+ * ended, whatever the tick rate); never past the next tick, which runs
+ * first. After a suspension of more than a second the ticks missed are
+ * skipped, not raced through. */
+static void catch_up(void)
+{
+    uint64_t now = mono_ns();
+    if (now - origin_ns > next_tick_ns() + 1000000000u) {
+        origin_ns = now - next_tick_ns();
+    }
+    while (origin_ns + next_tick_ns() <= now && stop_signal == 0) {
+        run_ticks(1u);
+    }
+    if (stop_signal == 0 && now - origin_ns > app.can.wire.now_ns) {
+        run_bus(now - origin_ns);
+    }
+}
+
+/* How long the loop may sleep: until the next tick, or the next frame's
+ * end on the bus, whichever comes first. */
+static uint64_t sleep_ns(void)
+{
+    uint64_t wake = origin_ns + next_tick_ns();
+    uint64_t now = mono_ns();
+    if (app.can_on) {
+        uint64_t frame_end = daran_sim_can_bus_next_ns(&app.can.wire);
+        if (frame_end != UINT64_MAX && origin_ns + frame_end < wake) {
+            wake = origin_ns + frame_end;
+        }
+    }
+    return wake > now ? wake - now : 0u;
+}
+
 static int run_realtime(void)
 {
     /* the ASCII pty, stdin, then the CAN adapters */
     struct pollfd pfd[2u + CAN_PTYS];
     int slave_keep = -1;
-    double period = 1.0 / (double)app.bus.tick_hz;
-    double next;
     static held_input_t pty_in;
     static held_input_t stdin_in;
     bool stdin_open = true;
@@ -1196,15 +1322,17 @@ static int run_realtime(void)
     if (open_links(&slave_keep) != 0) {
         return 1;
     }
+#ifdef __linux__
+    /* wake-ups on time to the microsecond: the default slack is 50 us */
+    (void)prctl(PR_SET_TIMERSLACK, 1ul, 0ul, 0ul, 0ul);
+#endif
     source_init(&pty_source, false, sink_pty);
     source_init(&stdin_source, true, sink_stdout);
-    next = now_s() + period;
+    origin_ns = mono_ns() - daran_sim_can_tick_ns(&app.bus, app.bus.ticks);
     while (stop_signal == 0) {
-        double wait = next - now_s();
-        int timeout = wait <= 0.0 ? 0 : (int)ceil(wait * 1000.0);
         bool want_pty = wants_input(&pty_source, &pty_in);
         bool want_stdin = stdin_open && wants_input(&stdin_source, &stdin_in);
-        pfd[0].fd = app.pty_fd; /* poll() skips a negative descriptor */
+        pfd[0].fd = app.pty_fd; /* a negative descriptor is skipped */
         pfd[0].events = (short)((want_pty ? POLLIN : 0) | (outq.len > 0u ? POLLOUT : 0));
         pfd[1].fd = want_stdin ? STDIN_FILENO : -1;
         pfd[1].events = POLLIN;
@@ -1212,17 +1340,16 @@ static int run_realtime(void)
             pfd[2u + k].fd = app.can_pty[k].fd;
             pfd[2u + k].events = sim_can_pty_events(&app.can_pty[k]);
         }
-        for (k = 0; k < 2u + app.can_ptys; k++) {
-            pfd[k].revents = 0;
-        }
-        if (poll(pfd, (nfds_t)(2u + app.can_ptys), timeout) < 0 && errno != EINTR) {
-            diag_urgent("poll: %s", strerror(errno));
+        if (poll_ns(pfd, 2u + app.can_ptys, sleep_ns()) < 0 && errno != EINTR) {
+            diag_urgent("pselect: %s", strerror(errno));
             app.status = 1;
             break;
         }
         if (stop_signal != 0) {
             break;
         }
+        /* time first: what the inputs bring comes at the present */
+        catch_up();
         if (outq.len > 0u) {
             outq_flush();
         }
@@ -1237,7 +1364,7 @@ static int run_realtime(void)
         if (outq.len > 0u) {
             outq_flush();
         }
-        if (want_stdin && (pfd[1].revents & (POLLIN | POLLHUP | POLLERR)) != 0) {
+        if (want_stdin && (pfd[1].revents & POLLIN) != 0) {
             ssize_t n = read(STDIN_FILENO, stdin_in.buf, sizeof stdin_in.buf);
             if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) {
                 source_eof(&stdin_source); /* nothing held, no query waiting */
@@ -1248,19 +1375,9 @@ static int run_realtime(void)
             }
         }
         take_held(&stdin_source, &stdin_in);
-        /* the adapters' frames join the bus at the current tick's time */
+        /* the adapters' frames join the bus now */
         for (k = 0; k < app.can_ptys; k++) {
             sim_can_pty_serve(&app.can_pty[k], pfd[2u + k].revents);
-        }
-        {
-            double t = now_s();
-            if (t - next > 1.0) {
-                next = t; /* fell far behind (suspended): do not race to catch up */
-            }
-            while (next <= t && stop_signal == 0) {
-                run_ticks(1u);
-                next += period;
-            }
         }
         if (outq.len > 0u) {
             outq_flush();

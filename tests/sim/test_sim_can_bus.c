@@ -1,8 +1,9 @@
 /* The simulated CAN bus alone (sim_can_bus.h): the time each frame takes
  * (its fields and its exact stuff bits), arbitration by identifier across
  * nodes and first-in-first-out within one, delivery to every node but the
- * sender when the last bit passes, and the faults: lost frames, a mute,
- * unplugged or bus-off node, the whole bus off, recovery. */
+ * sender when the last bit passes (an answer sent on arrival crossing in
+ * the same run, after its node's send delay), and the faults: lost frames,
+ * a mute, unplugged or bus-off node, the whole bus off, recovery. */
 #include <stdint.h>
 #include <string.h>
 
@@ -256,6 +257,71 @@ static void test_a_frame_queued_later_starts_when_it_is_queued(void)
                              heard[1].end_ns[0]);
 }
 
+/* A node that answers from its receive callback: node 1 sends this frame
+ * back when it hears one, as a drive answers a request. */
+static daran_can_frame_t answer;
+
+static void listen_and_answer(void *ctx, const daran_can_frame_t *frame, uint64_t end_ns)
+{
+    listen(ctx, frame, end_ns);
+    send_ok(1u, answer);
+}
+
+/* The answer is queued at the request's end (the bus's clock reads it in
+ * the callback), ready after node 1's send delay, and crosses in the same
+ * run: the requester has it at request + delay + answer, not at the next
+ * run. */
+static void test_an_answer_sent_on_arrival_crosses_in_the_same_run(void)
+{
+    daran_can_frame_t request = frame8(0x05Eu, 0u);
+    uint64_t request_end = (uint64_t)daran_sim_can_frame_bits(&request) * BIT_NS;
+    answer = frame8(0x043u, 0x5Au);
+    bus.node[1].deliver = listen_and_answer;
+    daran_sim_can_bus_set_send_delay(&bus, 1u, 10000u);
+    send_ok(0u, request);
+    (void)daran_sim_can_bus_run(&bus, 10000000u);
+    TEST_ASSERT_EQUAL_UINT32(1u, heard[0].count);
+    TEST_ASSERT_EQUAL_HEX32(0x043u, heard[0].frame[0].id);
+    TEST_ASSERT_EQUAL_UINT64(request_end + 10000u + daran_sim_can_frame_bits(&answer) * BIT_NS,
+                             heard[0].end_ns[0]);
+}
+
+/* A frame not yet ready does not take part in the arbitration: the wire
+ * goes to a higher id that is ready, and the delayed frame follows it. */
+static void test_a_frame_competes_only_once_its_send_delay_has_passed(void)
+{
+    daran_sim_can_bus_set_send_delay(&bus, 0u, 50000u);
+    send_ok(0u, frame8(0x001u, 0u));
+    send_ok(1u, frame8(0x700u, 0u));
+    (void)daran_sim_can_bus_run(&bus, 1000000u);
+    TEST_ASSERT_EQUAL_HEX32(0x700u, heard[2].frame[0].id);
+    TEST_ASSERT_EQUAL_HEX32(0x001u, heard[2].frame[1].id);
+    daran_sim_can_bus_set_send_delay(&bus, 0u, 0u);
+    daran_sim_can_bus_set_send_delay(&bus, NODES, 1u); /* no such node: nothing */
+}
+
+/* next_ns: the end of the frame on the wire, else of the one the idle wire
+ * will carry next (after its delay), else none. */
+static void test_the_next_frame_end_is_known_in_advance(void)
+{
+    daran_can_frame_t f = frame8(0x123u, 0u);
+    uint64_t frame = (uint64_t)daran_sim_can_frame_bits(&f) * BIT_NS;
+    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX, daran_sim_can_bus_next_ns(&bus));
+    daran_sim_can_bus_set_send_delay(&bus, 0u, 7000u);
+    (void)daran_sim_can_bus_run(&bus, 1000u);
+    send_ok(0u, f);
+    TEST_ASSERT_EQUAL_UINT64(1000u + 7000u + frame, daran_sim_can_bus_next_ns(&bus));
+    (void)daran_sim_can_bus_run(&bus, 9000u); /* on the wire */
+    TEST_ASSERT_EQUAL_UINT64(1000u + 7000u + frame, daran_sim_can_bus_next_ns(&bus));
+    (void)daran_sim_can_bus_run(&bus, daran_sim_can_bus_next_ns(&bus));
+    TEST_ASSERT_EQUAL_UINT32(1u, heard[1].count);
+    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX, daran_sim_can_bus_next_ns(&bus));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK,
+                          daran_sim_can_bus_fault(&bus, 0u, DARAN_SIM_CAN_FAULT_UNPLUG, 0u));
+    send_ok(0u, f);
+    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX, daran_sim_can_bus_next_ns(&bus)); /* off the bus */
+}
+
 /* A frame on the wire cannot be overtaken by a lower id queued after it
  * started. */
 static void test_a_frame_on_the_wire_is_not_preempted(void)
@@ -445,6 +511,9 @@ int main(void)
     RUN_TEST(test_the_sender_never_receives_its_own_frame);
     RUN_TEST(test_a_frame_arrives_when_its_last_bit_has_passed);
     RUN_TEST(test_a_frame_queued_later_starts_when_it_is_queued);
+    RUN_TEST(test_an_answer_sent_on_arrival_crosses_in_the_same_run);
+    RUN_TEST(test_a_frame_competes_only_once_its_send_delay_has_passed);
+    RUN_TEST(test_the_next_frame_end_is_known_in_advance);
     RUN_TEST(test_a_frame_on_the_wire_is_not_preempted);
     RUN_TEST(test_a_full_queue_refuses_the_next_frame);
     RUN_TEST(test_a_nodes_lost_frames_take_their_time_and_reach_nobody);
