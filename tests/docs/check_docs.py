@@ -38,18 +38,15 @@ Usage: check_docs.py [--root DIR] [--allow FILE] [DOC...]
          (self-test: passes only if checking DOC fails, the report names
           every TEXT and, if given, makes exactly N findings)
 """
-import argparse
 import csv
-import fnmatch
 import glob
-import io
 import json
 import os
 import re
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
+from docs_common import (AllowList, Finding, arguments, default_docs, expect_fail,
+                         line_numbers, lines_with_code_flag, read)
 
 BUILD_OUTPUT_EXT = (".elf", ".o", ".obj", ".a", ".so", ".bin", ".hex", ".map", ".exe",
                     ".gcda", ".gcno", ".profraw")
@@ -69,19 +66,6 @@ COUNT_RES = [
 ]
 COUNT_CONTEXT = 160  # characters each side of a count that must mention "propert"
 RULES = ("path", "option", "name", "preset", "count", "machine")
-
-
-class Finding:
-    def __init__(self, doc, line, rule, text, why):
-        self.doc, self.line, self.rule, self.text, self.why = doc, line, rule, text, why
-
-    def __str__(self):
-        return "%s:%d: %s `%s`: %s" % (self.doc, self.line, self.rule, self.text, self.why)
-
-
-def read(path):
-    with open(path, encoding="utf-8", errors="replace") as f:
-        return f.read()
 
 
 def tree_files(root):
@@ -186,22 +170,6 @@ def anchors(text):
     return out
 
 
-def lines_with_code_flag(text):
-    fence = None
-    for line in text.split("\n"):
-        m = re.match(r"\s*(```+|~~~+)", line)
-        if m:
-            if fence is None:
-                fence = m.group(1)[:3]
-                yield line, True
-                continue
-            if m.group(1).startswith(fence):
-                fence = None
-                yield line, True
-                continue
-        yield line, fence is not None
-
-
 def changelog_latest(text):
     """The changelog up to the end of its first (latest) ## section; older lines blanked."""
     lines = text.split("\n")
@@ -228,16 +196,15 @@ def path_tokens(code):
 class Checker:
     def __init__(self, tree, allow):
         self.tree = tree
-        self.allow = allow  # list of [doc, rule, text, reason, used]
+        self.allow = allow
         self.findings = []
         self.anchor_cache = {}
         self.seen = {"paths": 0, "links": 0, "names": 0, "presets": 0, "counts": 0}
 
     def report(self, doc, line, rule, text, why):
-        for entry in self.allow:
-            if entry[0] == doc and entry[1] == rule and entry[2] == text:
-                entry[4] = True
-                return
+        if self.allow.allows(doc, rule, text):
+            return
+        # a line's finding once (a count: once whichever form states the number)
         if not any(f.doc == doc and f.line == line and f.rule == rule and
                    (f.text == text or rule == "count" and re.findall(r"\d{3}", f.text) == re.findall(r"\d{3}", text))
                    for f in self.findings):
@@ -259,7 +226,7 @@ class Checker:
         return self.anchor_cache[path]
 
     def check_link(self, doc, doc_path, n, target):
-        target = target.strip().split()[0] if target.strip() else ""
+        target = (target.split() or [""])[0]  # a link's "title" left out
         if not target or re.match(r"[a-z][a-z0-9+.-]*:", target, re.I):
             return  # https:, mailto:
         self.seen["links"] += 1
@@ -274,14 +241,13 @@ class Checker:
                 self.report(doc, n, "path", target, "the page has no heading with that anchor")
 
     def check_counts(self, doc, text, line_of):
-        flat = text
         for rx in COUNT_RES:
-            for m in rx.finditer(flat):
+            for m in rx.finditer(text):
                 value = int(m.group(1))
                 if value < 100:
                     continue
                 lo, hi = max(0, m.start() - COUNT_CONTEXT), m.end() + COUNT_CONTEXT
-                around = flat[lo:hi].lower()
+                around = text[lo:hi].lower()
                 if "propert" not in around:
                     continue
                 self.seen["counts"] += 1
@@ -295,20 +261,6 @@ class Checker:
                             "paths are %d" % (self.tree.rows, self.tree.vendor_rows))
 
     def check_doc(self, doc, doc_path, text):
-        starts = [0]
-        for m in re.finditer("\n", text):
-            starts.append(m.end())
-
-        def line_of(offset):
-            lo, hi = 0, len(starts) - 1
-            while lo < hi:
-                mid = (lo + hi + 1) // 2
-                if starts[mid] <= offset:
-                    lo = mid
-                else:
-                    hi = mid - 1
-            return lo + 1
-
         prose_lines = []
         for n, (line, code) in enumerate(lines_with_code_flag(text), 1):
             if code:
@@ -352,83 +304,36 @@ class Checker:
                 self.seen["presets"] += 1
                 if name not in self.tree.presets and not name.isupper():
                     self.report(doc, n, "preset", name, "CMakePresets.json has no such preset")
-        self.check_counts(doc, "\n".join(prose_lines), line_of)
+        prose = "\n".join(prose_lines)
+        self.check_counts(doc, prose, line_numbers(prose))
 
 
-def load_allow(path):
-    entries = []
-    if not path or not os.path.exists(path):
-        return entries
-    for n, line in enumerate(open(path, encoding="utf-8"), 1):
-        if line.lstrip().startswith("#"):
-            continue
-        parts = re.split(r"\s#\s", line.rstrip("\n") + " ", maxsplit=1)
-        body, reason = parts[0].strip(), (parts[1] if len(parts) > 1 else "")
-        if not body:
-            continue
-        parts = body.split(None, 2)
-        if len(parts) != 3 or not reason.strip():
-            sys.exit("%s:%d: want `FILE RULE TEXT  # reason`" % (path, n))
-        entries.append([parts[0], parts[1], parts[2], reason.strip(), False])
-    return entries
-
-
-def run(root, docs, allow_path):
+def run(root, docs, allow):
+    """The findings on @p docs, then the allow-list's entries of these rules
+    that excepted nothing (the other rules are check_figures.py's and
+    check_snippets.py's)."""
     tree = Tree(root)
-    checker = Checker(tree, load_allow(allow_path))
+    checker = Checker(tree, allow)
     for doc_path in docs:
-        doc = os.path.relpath(doc_path, root)
         text = read(doc_path)
         if os.path.basename(doc_path) == "CHANGELOG.md":
             text = changelog_latest(text)
-        checker.check_doc(doc, doc_path, text)
-    out = io.StringIO()
-    for f in sorted(checker.findings, key=lambda f: (f.doc, f.line)):
-        print(f, file=out)
-    checked = {os.path.relpath(d, root) for d in docs}
-    for entry in checker.allow:
-        # the other rules of allowed.txt are check_figures.py's and check_snippets.py's
-        if not entry[4] and entry[0] in checked and entry[1] in RULES:
-            print("%s: allow-list entry `%s %s %s` matches nothing any more; remove it"
-                  % (allow_path, entry[0], entry[1], entry[2]), file=out)
-    failed = out.getvalue()
-    return failed, tree, checker
+        checker.check_doc(os.path.relpath(doc_path, root), doc_path, text)
+    checker.findings.sort(key=lambda f: (f.doc, f.line))
+    return tree, checker, allow.unused(RULES, docs, root)
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--root", default=ROOT)
-    ap.add_argument("--allow", default=os.path.join(HERE, "allowed.txt"))
-    ap.add_argument("--expect-fail", metavar="DOC")
-    ap.add_argument("--expect", action="append", default=[], metavar="TEXT")
-    ap.add_argument("--expect-findings", type=int, metavar="N")
-    ap.add_argument("docs", nargs="*")
-    args = ap.parse_args()
+    args = arguments(__doc__).parse_args()
     root = os.path.abspath(args.root)
-
     if args.expect_fail:
-        failed, _, checker = run(root, [os.path.abspath(args.expect_fail)], None)
-        sys.stdout.write(failed)
-        missing = [t for t in args.expect if t not in failed]
-        if args.expect_findings is not None and len(checker.findings) != args.expect_findings:
-            print("FAIL: %d findings, want %d (a line that names what exists was reported?)"
-                  % (len(checker.findings), args.expect_findings))
-            return 1
-        if not failed:
-            print("FAIL: the check passed on %s, which names what does not exist" % args.expect_fail)
-            return 1
-        if missing:
-            print("FAIL: the report does not name: %s" % ", ".join(missing))
-            return 1
-        print("ok: the check fails on %s and names all %d drifts" % (args.expect_fail, len(args.expect)))
-        return 0
+        _, checker, _ = run(root, [os.path.abspath(args.expect_fail)], AllowList())
+        return expect_fail(args, checker.findings)
 
-    docs = [os.path.abspath(d) for d in args.docs] or (
-        sorted(glob.glob(os.path.join(root, "docs", "*.md")))
-        + [os.path.join(root, "README.md"), os.path.join(root, "CHANGELOG.md")])
-    failed, tree, checker = run(root, docs, args.allow)
-    if failed:
-        sys.stdout.write(failed)
+    docs = [os.path.abspath(d) for d in args.docs] or default_docs(root, changelog=True)
+    tree, checker, unused = run(root, docs, AllowList(args.allow))
+    if checker.findings or unused:
+        print("\n".join([str(f) for f in checker.findings] + unused))
         print("docs name what is not in the tree: fix the doc (or, for a deliberate exception, "
               "add it with its reason to %s)" % os.path.relpath(args.allow, root))
         return 1

@@ -62,7 +62,6 @@ Usage: check_figures.py [--root DIR] [--probe T=CC,NM[,FLAG...]]
                         [--value KEY=N ...] [DOC...]
        check_figures.py ... --expect-fail DOC --expect TEXT ... [--expect-findings N]
 """
-import argparse
 import glob
 import os
 import re
@@ -70,13 +69,10 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_docs import load_allow  # noqa: E402
+from docs_common import (ROOT, AllowList, Findings, arguments, default_docs, expect_fail,
+                         line_numbers, read)
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
 BUDGETS = os.path.join(ROOT, "tests", "target", "check_budgets.py")
-PROBE = os.path.join(ROOT, "tests", "target", "sizeof_drive.c")
 UNREAD_DOCS = {"docs/performance.md"}
 
 NUMBER = r"(\d{1,3}(?:,\d{3})+|\d+)"
@@ -150,7 +146,7 @@ def stack_figure(objdir, lib, nm, objdump, python):
 def count_in(root, rel, pattern, within=None):
     """How many times @p pattern occurs in a file of the tree (in the part
     @p within matches, when given)."""
-    text = open(os.path.join(root, rel), encoding="utf-8").read()
+    text = read(os.path.join(root, rel))
     if within:
         text = re.search(within, text, re.S).group(0)
     return len(re.findall(pattern, text, re.M))
@@ -158,7 +154,7 @@ def count_in(root, rel, pattern, within=None):
 
 def fuzz_harnesses(root):
     """tests/fuzz's harnesses: its _harnesses list and what is appended to it."""
-    text = open(os.path.join(root, "tests", "fuzz", "CMakeLists.txt"), encoding="utf-8").read()
+    text = read(os.path.join(root, "tests", "fuzz", "CMakeLists.txt"))
     names = re.search(r"set\(_harnesses ([^)]*)\)", text).group(1).split()
     return names + re.findall(r"list\(APPEND _harnesses (\w+)\)", text)
 
@@ -181,7 +177,7 @@ SOURCE_COUNTS = (
 def conformance_groups(root):
     """(line requirements, CAN requirements) of the conf_req enum: the CAN
     ones start at REQ_CAN_FIRST's value and are numbered CAN1.. apart."""
-    text = open(os.path.join(root, "testkit", "conformance", "conformance.h"), encoding="utf-8").read()
+    text = read(os.path.join(root, "testkit", "conformance", "conformance.h"))
     body = re.search(r"typedef enum conf_req \{(.*?)REQ_COUNT", text, re.S).group(1)
     names = re.findall(r"\b(REQ_\w+)\s*,", body)
     first = re.search(r"#define REQ_CAN_FIRST (REQ_\w+)", text)
@@ -189,19 +185,9 @@ def conformance_groups(root):
     return split, len(names) - split
 
 
-def conformance_requirements(root):
-    return sum(conformance_groups(root))
-
-
 class Measures:
     def __init__(self):
         self.values, self.why_not = {}, {}
-
-    def set(self, key, value):
-        self.values[key] = value
-
-    def get(self, key):
-        return self.values.get(key)
 
     def missing(self, key):
         target = key.split("@")[1] if "@" in key else ""
@@ -219,10 +205,9 @@ class Claim:
         self.doc, self.line, self.key, self.stated, self.text = doc, line, key, stated, text
 
 
-def paragraph_bounds(text, pos):
+def paragraph_start(text, pos):
     start = text.rfind("\n\n", 0, pos)
-    end = text.find("\n\n", pos)
-    return (0 if start < 0 else start + 2), (len(text) if end < 0 else end)
+    return 0 if start < 0 else start + 2
 
 
 def clause_bounds(text, pos, end_pos):
@@ -234,12 +219,10 @@ def clause_bounds(text, pos, end_pos):
 
 def find_claims(doc, text):
     claims, spans, problems = [], [], []
-
-    def line_of(pos):
-        return text.count("\n", 0, pos) + 1
+    line_of = line_numbers(text)
 
     for m in TARGET_FORM.finditer(text):
-        p_start, _ = paragraph_bounds(text, m.start())
+        p_start = paragraph_start(text, m.start())
         before = text[max(p_start, m.start() - 300):m.start()]
         named = [(b.end(), TYPES[b.group(0)]) for b in re.finditer(r"daran_drive_t|daran_can_t\b", before)]
         spans.append((m.start(), m.end()))
@@ -287,7 +270,7 @@ def find_claims(doc, text):
 
 def conformance_list(root, doc_path):
     """The numbers of the **Cn** bullets under docs/conformance.md's "The requirements"."""
-    text = open(doc_path, encoding="utf-8").read()
+    text = read(doc_path)
     m = re.search(r"^## The requirements\n(.*?)(?=^## )", text, re.S | re.M)
     section = m.group(1) if m else ""
     return ([int(n) for n in re.findall(r"^- \*\*C(\d+)\*\*", section, re.M)],
@@ -297,29 +280,22 @@ def conformance_list(root, doc_path):
 # ---- the check ----
 
 def check(root, docs, measures, allow):
-    findings, checked, skipped = [], [], []
-
-    def report(doc, line, text, why):
-        for entry in allow:
-            if entry[0] == doc and entry[1] == "figure" and entry[2] == text:
-                entry[4] = True
-                return
-        findings.append("%s:%d: figure `%s`: %s" % (doc, line, text, why))
-
+    findings, checked, skipped = Findings(allow), [], []
     for path in docs:
         doc = os.path.relpath(path, root)
         if doc in UNREAD_DOCS:
             continue
-        claims, problems = find_claims(doc, open(path, encoding="utf-8").read())
+        claims, problems = find_claims(doc, read(path))
         for line, text, why in problems:
-            report(doc, line, text, why)
+            findings.add(doc, line, "figure", text, why)
         for c in claims:
-            real = measures.get(c.key)
+            real = measures.values.get(c.key)
             where = "%s:%d" % (c.doc, c.line)
             if real is None:
                 skipped.append("%s %s (%d): %s" % (where, c.key, c.stated, measures.missing(c.key)))
             elif real != c.stated:
-                report(c.doc, c.line, c.text, "the build measures %s = %d" % (c.key, real))
+                findings.add(c.doc, c.line, "figure", c.text,
+                             "the build measures %s = %d" % (c.key, real))
             else:
                 checked.append("%s %s = %d" % (where, c.key, real))
         if doc == "docs/conformance.md":
@@ -327,26 +303,23 @@ def check(root, docs, measures, allow):
                                              conformance_groups(root)):
                 want = list(range(1, count + 1))
                 if listed != want:
-                    report(doc, 1, "%s1..%s%d" % (prefix, prefix, listed[-1] if listed else 0),
-                           "the requirements listed are %s, the suite has %s1..%s%d"
-                           % (listed and "%s%d..%s%d (%d bullets)" % (prefix, listed[0], prefix,
-                                                                     listed[-1], len(listed)),
-                              prefix, prefix, count))
+                    stated = "%s1..%s%d" % (prefix, prefix, listed[-1] if listed else 0)
+                    findings.add(doc, 1, "figure", stated,
+                                 "the requirements listed are %s, the suite has %s1..%s%d"
+                                 % (listed and "%s%d..%s%d (%d bullets)" % (prefix, listed[0], prefix,
+                                                                           listed[-1], len(listed)),
+                                    prefix, prefix, count))
                 else:
                     checked.append("%s the list %s1..%s%d = conformance requirements"
                                    % (doc, prefix, prefix, count))
-    for entry in allow:
-        if entry[1] == "figure" and not entry[4] and os.path.join(root, entry[0]) in docs:
-            findings.append("allow-list entry `%s figure %s` matches nothing any more; remove it"
-                            % (entry[0], entry[2]))
     return findings, checked, skipped
 
 
 def measure(args, root):
     m = Measures()
-    m.set("conformance_requirements", conformance_requirements(root))
+    m.values["conformance_requirements"] = sum(conformance_groups(root))
     for key, _, count in SOURCE_COUNTS:
-        m.set(key, count(root))
+        m.values[key] = count(root)
     kind = args.build_kind
     for spec in args.probe:
         target, _, rest = spec.partition("=")
@@ -357,7 +330,7 @@ def measure(args, root):
             m.why_not[target] = "the %s probe could not be built: %s" % (target, e)
             continue
         for name, value in sizes.items():
-            m.set("%s@%s" % (name, target), value)
+            m.values["%s@%s" % (name, target)] = value
     for spec in args.probe_object:
         target, _, rest = spec.partition("=")
         obj, nm = rest.split(",")
@@ -365,25 +338,23 @@ def measure(args, root):
             m.why_not[target] = "this %s build does not have the default options" % target
             continue
         for name, value in sizes_from_object(obj, nm).items():
-            m.set("%s@%s" % (name, target), value)
+            m.values["%s@%s" % (name, target)] = value
     if args.flash_lib:
         target = {"default": "cortex-m4", "seed": "cortex-m4-seed"}.get(kind)
         if target:
             for name, value in flash_figures(args.flash_lib, args.size, sys.executable).items():
-                m.set("%s@%s" % (name, target), value)
+                m.values["%s@%s" % (name, target)] = value
             if args.stack_objdir:
-                m.set("core_stack@" + target, stack_figure(args.stack_objdir, args.flash_lib,
-                                                           args.nm, args.objdump, sys.executable))
+                m.values["core_stack@" + target] = stack_figure(
+                    args.stack_objdir, args.flash_lib, args.nm, args.objdump, sys.executable)
     for spec in args.value:
         key, _, value = spec.partition("=")
-        m.set(key, int(value))
+        m.values[key] = int(value)
     return m
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--root", default=ROOT)
-    ap.add_argument("--allow", default=os.path.join(HERE, "allowed.txt"))
+    ap = arguments(__doc__)
     ap.add_argument("--probe", action="append", default=[], metavar="T=CC,NM[,FLAG...]")
     ap.add_argument("--probe-object", action="append", default=[], metavar="T=OBJ,NM")
     ap.add_argument("--build-kind", default="default", choices=("default", "seed", "other"),
@@ -395,38 +366,24 @@ def main():
     ap.add_argument("--objdump")
     ap.add_argument("--value", action="append", default=[], metavar="KEY=N",
                     help="a measured figure given (the self-test)")
-    ap.add_argument("--expect-fail", metavar="DOC")
-    ap.add_argument("--expect", action="append", default=[], metavar="TEXT")
-    ap.add_argument("--expect-findings", type=int, metavar="N")
-    ap.add_argument("docs", nargs="*")
     args = ap.parse_args()
     root = os.path.abspath(args.root)
     measures = measure(args, root)
-
     if args.expect_fail:
-        findings, _, _ = check(root, [os.path.abspath(args.expect_fail)], measures, [])
-        report = "\n".join(findings)
-        print(report)
-        missing = [t for t in args.expect if t not in report]
-        if args.expect_findings is not None and len(findings) != args.expect_findings:
-            print("FAIL: %d findings, want %d" % (len(findings), args.expect_findings))
-            return 1
-        if not findings or missing:
-            print("FAIL: the report does not name: %s" % (", ".join(missing) or "anything"))
-            return 1
-        print("ok: the check fails on %s and names all %d drifts" % (args.expect_fail, len(args.expect)))
-        return 0
+        findings, _, _ = check(root, [os.path.abspath(args.expect_fail)], measures, AllowList())
+        return expect_fail(args, findings)
 
-    docs = [os.path.abspath(d) for d in args.docs] or (
-        sorted(glob.glob(os.path.join(root, "docs", "*.md"))) + [os.path.join(root, "README.md")])
-    findings, checked, skipped = check(root, docs, measures, load_allow(args.allow))
+    docs = [os.path.abspath(d) for d in args.docs] or default_docs(root)
+    allow = AllowList(args.allow)
+    findings, checked, skipped = check(root, docs, measures, allow)
+    unused = allow.unused(("figure",), docs, root)
     print("measured: " + ", ".join("%s = %d" % kv for kv in sorted(measures.values.items())))
     for line in checked:
         print("checked: " + line)
     for line in skipped:
         print("SKIPPED (not verified here): " + line)
-    if findings:
-        print("\n".join(findings))
+    if findings or unused:
+        print("\n".join([str(f) for f in findings] + unused))
         print("the docs state figures the build does not have: fix the doc (or, for history "
               "quoted as such, add it with its reason to %s)" % os.path.relpath(args.allow, root))
         return 1

@@ -25,7 +25,6 @@ Usage: check_snippets.py [--root DIR] [--cc CC] [DOC...]
 Without --cc the complete examples are reported as not compiled (the lint
 still runs); with it, a compiler that cannot run at all is an error.
 """
-import argparse
 import glob
 import os
 import re
@@ -33,11 +32,9 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_docs import load_allow, lines_with_code_flag  # noqa: E402
+from docs_common import (HERE, AllowList, Findings, arguments, default_docs, expect_fail,
+                         lines_with_code_flag, read)
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
 MARKER = "<!-- compiled: a complete example (tests/docs/check_snippets.py) -->"
 # The public headers an example may include: the core, the test kit, the
 # simulated drive, the minimal port (the client is in include/).
@@ -53,7 +50,7 @@ def nodiscard_names(root):
     names, macros = set(), {}
     for d in HEADER_DIRS:
         for path in glob.glob(os.path.join(root, d, "*.h")):
-            text = open(path, encoding="utf-8").read()
+            text = read(path)
             names |= set(NODISCARD_RE.findall(text))
             for macro, target in MACRO_RE.findall(text):
                 macros[macro] = target
@@ -85,16 +82,9 @@ def c_blocks(text):
 
 class Snippets:
     def __init__(self, root, allow, cc):
-        self.root, self.allow, self.cc = root, allow, cc
+        self.root, self.cc = root, cc
         self.nodiscard = nodiscard_names(root)
-        self.findings, self.compiled, self.not_compiled = [], 0, []
-
-    def report(self, doc, line, rule, text, why):
-        for entry in self.allow:
-            if entry[0] == doc and entry[1] == rule and entry[2] == text:
-                entry[4] = True
-                return
-        self.findings.append("%s:%d: %s `%s`: %s" % (doc, line, rule, text, why))
+        self.findings, self.compiled, self.not_compiled = Findings(allow), 0, []
 
     def lint(self, doc, start, code):
         bare = strip_comments(code)
@@ -105,7 +95,7 @@ class Snippets:
                        "silence gcc)" if m.group(1) else
                        "its result is marked warn_unused_result: test it, or the example fails "
                        "to build under -Werror")
-                self.report(doc, line, "result", m.group(2), why)
+                self.findings.add(doc, line, "result", m.group(2), why)
 
     def compile(self, doc, start, code):
         if not self.cc:
@@ -123,9 +113,9 @@ class Snippets:
         self.compiled += 1
         if result.returncode != 0:
             first = next((l for l in result.stdout.splitlines() if "error" in l), "")
-            self.report(doc, start, "compile", first.split(": error: ")[-1] or "fails",
-                        "the complete example does not compile with %s -Wall -Werror:\n%s"
-                        % (os.path.basename(self.cc), result.stdout.rstrip()))
+            self.findings.add(doc, start, "compile", first.split(": error: ")[-1] or "fails",
+                              "the complete example does not compile with %s -Wall -Werror:\n%s"
+                              % (os.path.basename(self.cc), result.stdout.rstrip()))
 
     def check(self, doc, text):
         for start, code, compiled in c_blocks(text):
@@ -134,49 +124,28 @@ class Snippets:
                 self.compile(doc, start, code)
 
 
-def run(root, docs, allow_path, cc):
-    checker = Snippets(root, load_allow(allow_path), cc)
+def run(root, docs, allow, cc):
+    checker = Snippets(root, allow, cc)
     for path in docs:
-        checker.check(os.path.relpath(path, root), open(path, encoding="utf-8").read())
-    checked = {os.path.relpath(d, root) for d in docs}
-    for entry in checker.allow:
-        if entry[1] in ("result", "compile") and not entry[4] and entry[0] in checked:
-            checker.findings.append("%s: allow-list entry `%s %s %s` matches nothing any more; "
-                                    "remove it" % (allow_path, entry[0], entry[1], entry[2]))
+        checker.check(os.path.relpath(path, root), read(path))
     return checker
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--root", default=ROOT)
-    ap.add_argument("--allow", default=os.path.join(HERE, "allowed.txt"))
+    ap = arguments(__doc__)
     ap.add_argument("--cc", help="the C compiler for the complete examples")
-    ap.add_argument("--expect-fail", metavar="DOC")
-    ap.add_argument("--expect", action="append", default=[], metavar="TEXT")
-    ap.add_argument("--expect-findings", type=int, metavar="N")
-    ap.add_argument("docs", nargs="*")
     args = ap.parse_args()
     root = os.path.abspath(args.root)
-
     if args.expect_fail:
-        checker = run(root, [os.path.abspath(args.expect_fail)], None, args.cc)
-        report = "\n".join(checker.findings)
-        print(report)
-        missing = [t for t in args.expect if t not in report]
-        if args.expect_findings is not None and len(checker.findings) != args.expect_findings:
-            print("FAIL: %d findings, want %d" % (len(checker.findings), args.expect_findings))
-            return 1
-        if not checker.findings or missing:
-            print("FAIL: the report does not name: %s" % (", ".join(missing) or "anything"))
-            return 1
-        print("ok: the check fails on %s and names all %d faults" % (args.expect_fail, len(args.expect)))
-        return 0
+        checker = run(root, [os.path.abspath(args.expect_fail)], AllowList(), args.cc)
+        return expect_fail(args, checker.findings)
 
-    docs = [os.path.abspath(d) for d in args.docs] or (
-        sorted(glob.glob(os.path.join(root, "docs", "*.md"))) + [os.path.join(root, "README.md")])
-    checker = run(root, docs, args.allow, args.cc)
-    if checker.findings:
-        print("\n".join(checker.findings))
+    docs = [os.path.abspath(d) for d in args.docs] or default_docs(root)
+    allow = AllowList(args.allow)
+    checker = run(root, docs, allow, args.cc)
+    unused = allow.unused(("result", "compile"), docs, root)
+    if checker.findings or unused:
+        print("\n".join([str(f) for f in checker.findings] + unused))
         print("the docs' C snippets would not build under -Werror: fix the snippet (or, for a "
               "deliberate exception, add it with its reason to %s)" % os.path.relpath(args.allow, root))
         return 1
