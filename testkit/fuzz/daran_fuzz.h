@@ -10,6 +10,7 @@
 #ifndef DARAN_FUZZ_H
 #define DARAN_FUZZ_H
 
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -74,9 +75,36 @@ int daran_fuzz_recording_next(daran_fuzz_recording_t *rec, char *out, size_t cap
 #define DARAN_FUZZ_ADVANCE_MS 2u
 #endif
 
+/* ---- what both targets (lines and frames) do alike (fuzz_rows.c) ---- */
+
+struct daran_test_port; /* daran_test_port.h */
+struct daran_recorder;  /* daran_recorder.h */
+
 /** The name of the input being run, printed with a violated invariant (the
  * replay sets it; NULL: none). */
 void daran_fuzz_set_input_name(const char *name);
+
+/** What is missing from the test port (@p port may be NULL) for any target
+ * to run it (its HAL's four functions, reset()): NULL when nothing. */
+const char *daran_fuzz_port_problem(const struct daran_test_port *port);
+
+/** The start of an input: the port's reset(), then @p drive bound to the
+ * port's HAL wrapped in @p rec (getters logged too) with the reply sink
+ * @p write. NULL when it went so, else what failed. */
+const char *daran_fuzz_start_drive(const struct daran_test_port *port, struct daran_recorder *rec,
+                                   daran_drive_t *drive, daran_write_fn write, void *write_ctx);
+
+/** The first line of a violation's report on stderr: the banner, @p front_end
+ * ("CAN, " or ""), the port's name and the input's, then @p fmt with @p ap. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((format(printf, 3, 0)))
+#endif
+void daran_fuzz_report_violation(const char *front_end, const struct daran_test_port *port,
+                                 const char *fmt, va_list ap);
+
+/** The HAL calls @p rec logged, on stderr after @p label, one a line,
+ * aligned under the first. */
+void daran_fuzz_report_calls(const struct daran_recorder *rec, const char *label);
 
 /** What the inputs run so far exercised (the replay prints it: a corpus
  * that never reaches a HAL call or another drive's line checks little). The

@@ -85,7 +85,6 @@ typedef struct can_harness {
     bool has_frame;
     daran_can_frame_t sent[SENT_MAX];
     size_t n_sent;
-    const char *input_name;
 } can_harness_t;
 
 static can_harness_t harness;
@@ -94,11 +93,6 @@ static daran_fuzz_totals_t totals;
 const daran_fuzz_totals_t *daran_fuzz_totals(void)
 {
     return &totals;
-}
-
-void daran_fuzz_set_input_name(const char *name)
-{
-    harness.input_name = name;
 }
 
 static void describe(const daran_can_frame_t *f, char *buf, size_t size)
@@ -119,13 +113,9 @@ static void violated(const char *fmt, ...)
     const can_harness_t *h = &harness;
     static char text[4096];
     va_list ap;
-    fprintf(stderr, "\nDARAN FUZZ INVARIANT VIOLATED (CAN, port \"%s\"%s%s): ",
-            h->port != NULL && h->port->name != NULL ? h->port->name : "?",
-            h->input_name != NULL ? ", input " : "", h->input_name != NULL ? h->input_name : "");
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    daran_fuzz_report_violation("CAN, ", h->port, fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
     fprintf(stderr, "  step:       %s, %lu ms into the input\n", h->step != NULL ? h->step : "?",
             (unsigned long)h->now);
     if (h->has_frame) {
@@ -136,16 +126,7 @@ static void violated(const char *fmt, ...)
         describe(&h->sent[i], text, sizeof text);
         fprintf(stderr, "  sent:       %s\n", text);
     }
-    (void)daran_recorder_describe(&h->rec, text, sizeof text);
-    fputs("  HAL calls:  ", stderr);
-    for (const char *c = text; *c != '\0'; c++) {
-        if (*c == '\n') {
-            fputs("\n              ", stderr); /* one call a line, aligned */
-        } else {
-            fputc(*c, stderr);
-        }
-    }
-    fputc('\n', stderr);
+    daran_fuzz_report_calls(&h->rec, "  HAL calls:  ");
     fflush(stderr);
     abort();
 }
@@ -538,10 +519,9 @@ static void bind_port(can_harness_t *h)
 {
     h->port = daran_test_port();
     const daran_test_port_t *p = h->port;
-    if (p == NULL || p->hal == NULL || p->reset == NULL || p->hal->get == NULL ||
-        p->hal->set == NULL || p->hal->move == NULL || p->hal->action == NULL) {
-        violated("daran_test_port() gave no port, or one without its HAL (all four functions) "
-                 "and reset()");
+    const char *problem = daran_fuzz_port_problem(p);
+    if (problem != NULL) {
+        violated("%s", problem);
     }
     if (p->can_port == NULL || p->can_port->send == NULL || p->can_port->now_ms == NULL) {
         violated("the test port gives no can_port with send() and now_ms(): nothing to fuzz");
@@ -553,18 +533,12 @@ static void bind_port(can_harness_t *h)
 
 static void start_input(can_harness_t *h)
 {
-    const daran_test_port_t *p = h->port;
     h->step = "reset and init";
     h->has_frame = false;
     h->n_sent = 0;
-    if (!p->reset(p->ctx)) {
-        violated("the test port's reset() failed");
-    }
-    daran_recorder_init(&h->rec, p->hal, p->ctx);
-    h->rec.log_gets = true;
-    if (daran_init(&h->drive, &daran_recorder_hal, &h->rec, no_reply, NULL) != DARAN_OK) {
-        violated("daran_init() refused the drive: is the harness built against the core's "
-                 "options header?");
+    const char *problem = daran_fuzz_start_drive(h->port, &h->rec, &h->drive, no_reply, NULL);
+    if (problem != NULL) {
+        violated("%s", problem);
     }
     daran_result_t result = daran_can_init(&h->can, &h->drive, &h->wrap, h);
     if (result != DARAN_OK) {

@@ -63,7 +63,6 @@ typedef struct harness {
     size_t word_count;
     daran_recorder_t rec;
     daran_drive_t drive;
-    const char *input_name;
     /* the request line being run, and its replies */
     const char *line;
     size_t line_len;
@@ -93,36 +92,18 @@ static void violated(const char *fmt, ...)
     const harness_t *h = &harness;
     static char text[4096];
     va_list ap;
-    fprintf(stderr, "\nDARAN FUZZ INVARIANT VIOLATED (port \"%s\"%s%s): ",
-            h->port != NULL && h->port->name != NULL ? h->port->name : "?",
-            h->input_name != NULL ? ", input " : "", h->input_name != NULL ? h->input_name : "");
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    daran_fuzz_report_violation("", h->port, fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
     if (h->line != NULL) {
         fprintf(stderr, "  request:   \"%s\"\n",
                 daran_recorder_escape(h->line, h->line_len, text, sizeof text));
         fprintf(stderr, "  replies:   \"%s\"\n",
                 daran_recorder_escape(h->replies, h->replies_len, text, sizeof text));
-        (void)daran_recorder_describe(&h->rec, text, sizeof text);
-        fputs("  HAL calls: ", stderr);
-        for (const char *c = text; *c != '\0'; c++) {
-            if (*c == '\n') {
-                fputs("\n             ", stderr); /* one call a line, aligned */
-            } else {
-                fputc(*c, stderr);
-            }
-        }
-        fputc('\n', stderr);
+        daran_fuzz_report_calls(&h->rec, "  HAL calls: ");
     }
     fflush(stderr);
     abort();
-}
-
-void daran_fuzz_set_input_name(const char *name)
-{
-    harness.input_name = name;
 }
 
 /* ---- the drive ---- */
@@ -166,10 +147,9 @@ static void bind_port(harness_t *h)
 {
     h->port = daran_test_port();
     const daran_test_port_t *p = h->port;
-    if (p == NULL || p->hal == NULL || p->reset == NULL || p->hal->get == NULL ||
-        p->hal->set == NULL || p->hal->move == NULL || p->hal->action == NULL) {
-        violated("daran_test_port() gave no port, or one without its HAL (all four functions) "
-                 "and reset()");
+    const char *problem = daran_fuzz_port_problem(p);
+    if (problem != NULL) {
+        violated("%s", problem);
     }
     if (p->command_count > sizeof h->words / sizeof h->words[0] ||
         (p->command_count > 0u && p->commands == NULL)) {
@@ -186,14 +166,9 @@ static void start_input(harness_t *h)
 {
     const daran_test_port_t *p = h->port;
     h->line = NULL;
-    if (!p->reset(p->ctx)) {
-        violated("the test port's reset() failed");
-    }
-    daran_recorder_init(&h->rec, p->hal, p->ctx);
-    h->rec.log_gets = true;
-    if (daran_init(&h->drive, &daran_recorder_hal, &h->rec, reply_sink, h) != DARAN_OK) {
-        violated("daran_init() refused the drive: is the harness built against the core's "
-                 "options header?");
+    const char *problem = daran_fuzz_start_drive(p, &h->rec, &h->drive, reply_sink, h);
+    if (problem != NULL) {
+        violated("%s", problem);
     }
     if (p->command_count > 0u &&
         daran_set_port_commands(&h->drive, p->commands, p->command_count, p->commands_ctx) !=

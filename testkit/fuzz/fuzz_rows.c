@@ -1,11 +1,14 @@
-/* The build's property table as the fuzz harnesses read it (from the public
- * lists compiled with the adopter's options header), and what daran_hal.h
- * promises the HAL about each call. */
+/* What both fuzz targets (lines and frames) share: the build's property
+ * table as they read it (from the public lists compiled with the adopter's
+ * options header), what daran_hal.h promises the HAL about each call, and
+ * the test port's start and a violation's report. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "daran_fuzz.h"
 #include "daran_recorder.h"
+#include "daran_test_port.h"
 
 typedef struct prop_row {
     bool writable;
@@ -122,4 +125,63 @@ const char *daran_fuzz_call_problem(const daran_call_t *c, bool state_known, boo
     }
     (void)snprintf(text, sizeof text, "a logged call of kind %d", (int)c->kind);
     return text;
+}
+
+/* ---- the test port's start, a violation's report ---- */
+
+static const char *input_name;
+
+void daran_fuzz_set_input_name(const char *name)
+{
+    input_name = name;
+}
+
+const char *daran_fuzz_port_problem(const daran_test_port_t *port)
+{
+    if (port == NULL || port->hal == NULL || port->reset == NULL || port->hal->get == NULL ||
+        port->hal->set == NULL || port->hal->move == NULL || port->hal->action == NULL) {
+        return "daran_test_port() gave no port, or one without its HAL (all four functions) "
+               "and reset()";
+    }
+    return NULL;
+}
+
+const char *daran_fuzz_start_drive(const daran_test_port_t *port, daran_recorder_t *rec,
+                                   daran_drive_t *drive, daran_write_fn write, void *write_ctx)
+{
+    if (!port->reset(port->ctx)) {
+        return "the test port's reset() failed";
+    }
+    daran_recorder_init(rec, port->hal, port->ctx);
+    rec->log_gets = true;
+    if (daran_init(drive, &daran_recorder_hal, rec, write, write_ctx) != DARAN_OK) {
+        return "daran_init() refused the drive: is the harness built against the core's "
+               "options header?";
+    }
+    return NULL;
+}
+
+void daran_fuzz_report_violation(const char *front_end, const daran_test_port_t *port,
+                                 const char *fmt, va_list ap)
+{
+    fprintf(stderr, "\nDARAN FUZZ INVARIANT VIOLATED (%sport \"%s\"%s%s): ", front_end,
+            port != NULL && port->name != NULL ? port->name : "?",
+            input_name != NULL ? ", input " : "", input_name != NULL ? input_name : "");
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+}
+
+void daran_fuzz_report_calls(const daran_recorder_t *rec, const char *label)
+{
+    static char text[4096];
+    (void)daran_recorder_describe(rec, text, sizeof text);
+    fputs(label, stderr);
+    for (const char *c = text; *c != '\0'; c++) {
+        if (*c == '\n') {
+            fprintf(stderr, "\n%*s", (int)strlen(label), ""); /* one call a line, aligned */
+        } else {
+            fputc(*c, stderr);
+        }
+    }
+    fputc('\n', stderr);
 }

@@ -3,10 +3,10 @@
  * ticks) and non-volatile memory. Its reset is a new drive: id 1, empty
  * storage, closed loop.
  *
- * Its CAN glue is the one a firmware has: a clock that is the drive time
- * advance() passes, a transmit that takes every frame (a host has no
- * mailbox to fill), and a receive path whose acceptance filter passes
- * standard data frames at the drive's current id and at node 0.
+ * Its CAN glue is the one a firmware has (firmware_can_glue.h): a clock
+ * that is the drive time advance() passes, a transmit that takes every
+ * frame, and a receive path whose acceptance filter passes standard ids at
+ * the drive's current id and at node 0.
  *
  * Compiled with BROKEN_CAN, the environment variable BROKEN_CAN chooses one
  * deliberate breach of the CAN glue or the HAL that the suite must catch
@@ -24,18 +24,29 @@
 #include "daran_test_port.h"
 
 #include "daran_sim.h"
+#include "firmware_can_glue.h"
 
 #define SIM_TICK_HZ 1000u
 
+static uint32_t node_id(void *drive)
+{
+    return daran_sim_drive_id(drive);
+}
+
 static struct sim_port {
     daran_sim_drive_t sim;
-    uint32_t now_ms;
-    uint32_t filter_node; /* breach 3: the id the filter was set for at reset */
-    daran_can_t *heard;   /* breach 6: the front end its own frames come back to */
-} port_state;
+    firmware_can_glue_t glue;
+} port_state = {.glue = {.node_id = node_id, .drive = &port_state.sim}};
 
 #ifdef BROKEN_CAN
 static int breach;
+/* the breaches of the CAN glue, by number */
+static const firmware_can_mistake_t glue_mistakes[] = {
+    [3] = FIRMWARE_CAN_FILTER_KEPT_AT_RESET_ID,
+    [6] = FIRMWARE_CAN_HEARS_ITS_OWN_FRAMES,
+    [7] = FIRMWARE_CAN_EXTENDED_ID_TAKEN_AS_STANDARD,
+    [8] = FIRMWARE_CAN_CLOCK_IN_TENTHS,
+};
 #else
 enum { breach = 0 };
 #endif
@@ -77,9 +88,7 @@ static bool factory_reset(void *ctx)
 {
     struct sim_port *p = ctx;
     daran_sim_drive_init(&p->sim, 0u, SIM_TICK_HZ);
-    p->now_ms = 0;
-    p->filter_node = daran_sim_drive_id(&p->sim);
-    p->heard = NULL;
+    firmware_can_glue_reset(&p->glue);
     return true;
 }
 
@@ -89,43 +98,7 @@ static void advance(void *ctx, uint32_t ms)
     for (uint32_t tick = 0; tick < ms * (SIM_TICK_HZ / 1000u); tick++) {
         daran_sim_drive_tick(&p->sim);
     }
-    p->now_ms += ms;
-}
-
-static bool can_send(void *ctx, const daran_can_frame_t *frame)
-{
-    struct sim_port *p = ctx;
-    if (breach == 6 && p->heard != NULL) {
-        (void)daran_can_receive(p->heard, frame);
-    }
-    return true;
-}
-
-static uint32_t can_now_ms(void *ctx)
-{
-    const struct sim_port *p = ctx;
-    return breach == 8 ? p->now_ms * 10u : p->now_ms;
-}
-
-static const daran_can_port_t can_port = {can_send, can_now_ms, NULL};
-
-/* The acceptance filter: standard ids at the drive's id or node 0 (status
- * frames at the own id included: the duplicate check needs them). */
-static void can_deliver(void *ctx, daran_can_t *can, const daran_can_frame_t *frame)
-{
-    struct sim_port *p = ctx;
-    daran_can_frame_t taken = *frame;
-    if (breach == 7) {
-        taken.flags &= (uint8_t)~DARAN_CAN_FRAME_EXTENDED;
-        taken.id &= 0x7FFu;
-    }
-    p->heard = can;
-    uint32_t node = breach == 3 ? p->filter_node : daran_sim_drive_id(&p->sim);
-    bool standard = (taken.flags & DARAN_CAN_FRAME_EXTENDED) == 0u;
-    uint32_t frame_node = taken.id >> 5;
-    if (!standard || frame_node == node || frame_node == 0u) {
-        (void)daran_can_receive(can, &taken); /* it refuses other shapes itself */
-    }
+    firmware_can_glue_advance(&p->glue, ms);
 }
 
 const daran_test_port_t *daran_test_port(void)
@@ -133,6 +106,8 @@ const daran_test_port_t *daran_test_port(void)
 #ifdef BROKEN_CAN
     const char *chosen = getenv("BROKEN_CAN");
     breach = chosen != NULL ? atoi(chosen) : 0;
+    bool of_the_glue = breach > 0 && (size_t)breach < sizeof glue_mistakes / sizeof glue_mistakes[0];
+    port_state.glue.mistake = of_the_glue ? glue_mistakes[breach] : FIRMWARE_CAN_NO_MISTAKE;
 #endif
     static const daran_test_port_t port = {
         .name = "port/sim (the simulated drive)",
@@ -140,9 +115,9 @@ const daran_test_port_t *daran_test_port(void)
         .ctx = &port_state,
         .reset = factory_reset,
         .advance = advance,
-        .can_port = &can_port,
-        .can_ctx = &port_state,
-        .can_deliver = can_deliver,
+        .can_port = &firmware_can_glue_port,
+        .can_ctx = &port_state.glue,
+        .can_deliver = firmware_can_glue_deliver,
     };
     return &port;
 }

@@ -114,7 +114,7 @@ done
 
 # An adopter's port through daran_ascii_add_fuzz_target(): port/minimal, 20 s
 # from the vendor clients' recordings (tests/adopter-fuzz).
-echo "40-fuzz: adopter_fuzz (port/minimal through daran_ascii_add_fuzz_target), 20 s"
+echo "40-fuzz: adopter_fuzz_run (port/minimal through the kit's fuzz targets): 10 s of frames, then 10 s of lines"
 if ! nice -n 10 cmake --build --preset fuzz -j2 --target adopter_fuzz_run >"$work/adopter.log" 2>&1; then
     failed=1
     echo "40-fuzz: adopter_fuzz FAILED; the end of its log:"

@@ -71,7 +71,7 @@ adopter_fuzz() {
     cmake --build "$work/adopter-clang" "${jobs[@]}" &&
     cmake --build "$work/adopter-clang" --target acme_fuzz_run
 }
-step "adopter with clang-14: the libFuzzer harness fuzzes 20 s" adopter_fuzz
+step "adopter with clang-14: the libFuzzer harnesses fuzz 10 s of frames, then 10 s of lines" adopter_fuzz
 
 adopter_subdirectory() {
   cmake -S examples/adopter -B "$work/adopter-subdir" -DCMAKE_BUILD_TYPE=Debug \
