@@ -8,7 +8,8 @@
 #      options header, the conformance suite, the fuzz replay, the recorded
 #      session replayed into daran-sim and into its own port, its own test
 #      over the simulated drive (all CTest);
-#   3. the same with clang-14: the libFuzzer harness fuzzes 20 s;
+#   3. the same with clang-14: the libFuzzer harnesses fuzz 10 s of frames,
+#      then 10 s of lines;
 #   4. examples/adopter again through add_subdirectory of the source tree.
 # Prints the time each step took: the time a new port needs from an
 # installed package to a green conformance run is step 2's configure+build+
