@@ -5,9 +5,15 @@ change in src/*.c make at least one unit test fail?
 Copies the source tree (without build/ and .git/) to a scratch directory,
 builds the unit test programs there (gcc, Debug, ASan + UBSan, so a mutant
 that only writes out of bounds is caught too), then for a random sample of
-mutants changes one operator (== != < <= > >= && || and +1u/-1u), rebuilds,
-runs every unit program (tests/unit's, tests/number's and the bridge's) and restores the
-file.
+mutants changes one operator (== != < <= > >= && || and +1u/-1u), runs the
+unit programs (tests/unit's, tests/number's and the bridge's) until one fails
+and restores the file. Each program is rebuilt only when its turn comes, and
+the program that last killed a mutant of a file runs first for that file's
+next mutant, so a killed mutant costs one link and one run, not fifteen; a
+survivor has passed every program. A program that outlives 20 times its
+unmutated run (at least 60 s; a mutant that loops) counts as a kill, and the
+summary says how many kills were timeouts, so a loaded machine cannot pass
+off a slow run as a kill unnoticed.
 
 A survivor is a gap in the tests unless it is an equivalent mutant listed,
 with the reason, in mutation_equivalent.txt (one "file: before -> after" per
@@ -28,6 +34,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
 OPS = [(r"(?<![<>=!])==(?!=)", "!="), (r"!=", "=="), (r"(?<![<-])<=", "<"),
        (r"(?<![<>-])<(?![<=])", "<="), (r"(?<![->])>=", ">"), (r"(?<![->])>(?![>=])", ">="),
@@ -75,16 +82,32 @@ def code_lines(text):
         yield i, line.split("/*")[0]
 
 
-def killed_by_tests(build, programs):
+def run_times(build, programs):
+    """Wall time of each program's unmutated run, or None when one fails."""
+    times = {}
     for program in programs:
+        start = time.monotonic()
+        if subprocess.run([os.path.join(build, program)], capture_output=True).returncode:
+            return None
+        times[program] = time.monotonic() - start
+    return times
+
+
+def verdict(build, programs, timeouts):
+    """Build and run the programs in turn: (outcome, the program that failed,
+    whether it timed out), outcome "broken" when one does not build, "killed"
+    when one fails, else "survived"."""
+    for program in programs:
+        if subprocess.run(["ninja", "-C", build, program], capture_output=True).returncode:
+            return "broken", None, False
         try:
-            r = subprocess.run([os.path.join(build, program)],
-                               capture_output=True, timeout=60)
+            r = subprocess.run([os.path.join(build, program)], capture_output=True,
+                               timeout=timeouts[program])
             if r.returncode != 0:
-                return True
+                return "killed", program, False
         except subprocess.TimeoutExpired:
-            return True
-    return False
+            return "killed", program, True
+    return "survived", None, False
 
 
 def main():
@@ -97,6 +120,7 @@ def main():
     repo = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
     targets = test_programs(repo)
     accepted = equivalent_mutants(repo)
+    started = time.monotonic()
     work = tempfile.mkdtemp(prefix="daran-mutation-")
     tree, build = os.path.join(work, "tree"), os.path.join(work, "build")
     shutil.copytree(repo, tree, ignore=shutil.ignore_patterns("build", ".git"))
@@ -104,9 +128,11 @@ def main():
                     "-DCMAKE_BUILD_TYPE=Debug", "-DDARAN_SANITIZE=ON", "-DDARAN_BUILD_SIM=OFF",
                     "-DDARAN_BUILD_DEMO=OFF"], check=True, capture_output=True)
     subprocess.run(["ninja", "-C", build] + targets, check=True, capture_output=True)
-    if killed_by_tests(build, targets):
+    baseline = run_times(build, targets)
+    if baseline is None:
         print("the unmutated core fails its unit tests")
         return 1
+    timeouts = {p: max(60.0, 20.0 * t) for p, t in baseline.items()}
 
     src = os.path.join(tree, "src")
     files = [f for f in sorted(os.listdir(src)) if f.endswith(".c") and f != "version.c"
@@ -123,8 +149,9 @@ def main():
     print(f"{len(mutants)} possible mutants in {len(files)} files, running {len(sample)} "
           f"against {len(targets)} unit programs", flush=True)
 
-    killed = equivalent = broken = 0
+    killed = equivalent = broken = timed_out = 0
     gaps = []
+    order = {f: list(targets) for f in files}  # the last killer of each file first
     for f, i, a, b, rep in sample:
         path = os.path.join(src, f)
         original = open(path).read()
@@ -133,10 +160,14 @@ def main():
         lines[i] = before[:a] + rep + before[b:]
         open(path, "w").write("\n".join(lines))
         try:
-            if subprocess.run(["ninja", "-C", build] + targets, capture_output=True).returncode:
+            outcome, killer, timeout = verdict(build, order[f], timeouts)
+            if outcome == "broken":
                 broken += 1
-            elif killed_by_tests(build, targets):
+            elif outcome == "killed":
                 killed += 1
+                timed_out += timeout
+                order[f].remove(killer)
+                order[f].insert(0, killer)
             else:
                 key = f"{f}: {before.strip()} -> {lines[i].strip()}"
                 if key in accepted:
@@ -146,8 +177,9 @@ def main():
                     print(f"SURVIVED {f}:{i + 1}: {key}", flush=True)
         finally:
             open(path, "w").write(original)
-    print(f"killed {killed}, equivalent {equivalent}, survived {len(gaps)}, "
-          f"did not build {broken}", flush=True)
+    print(f"killed {killed} ({timed_out} by a timeout), equivalent {equivalent}, "
+          f"survived {len(gaps)}, did not build {broken}; {time.monotonic() - started:.0f} s",
+          flush=True)
     shutil.rmtree(work)
     return 0 if not gaps else 1
 
