@@ -291,6 +291,7 @@ static void test_bad_port_command_lines_get_the_library_errors_and_no_call(void)
         {"bu 1 4294967296", "value out of range"}, {"bu 1 1001", "value out of range"},
         {"bu 1 -1", "value out of range"},       {"bu 1 1.5", "invalid value"},
         {"bq 1 4", "invalid mode"},              {"bq 1 2.5", "invalid value"},
+        {"bq 1 32", "invalid mode"},             {"bq 1 33", "invalid mode"}, /* past the set's bits */
         {"bq 1 1 2", "invalid command format"},
     };
     mock_t *m = port_mock();
