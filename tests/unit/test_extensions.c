@@ -335,6 +335,34 @@ static void test_port_commands_are_addressed_like_the_core_s(void)
     TEST_ASSERT_EQUAL_UINT(0, m->n_fwd);
 }
 
+/* `dot id`: a reply that starts with '.', which no core reply does. */
+static daran_result_t dot_handler(daran_drive_t *drive, const daran_args_t *args, void *ctx)
+{
+    (void)args;
+    (void)ctx;
+    daran_reply(drive, ".", 1);
+    return DARAN_OK;
+}
+
+/* A line of exactly DARAN_LINE_MAX bytes has no line end stored after it, so
+ * the byte past a path that ends it is the reply buffer's first: after a
+ * port reply of ".", "axis2" is still a path without its dot (a system
+ * path, answered here), not one of drive 2's. */
+static void test_a_path_that_ends_a_full_length_line_reads_nothing_past_it(void)
+{
+    static const daran_port_command_t dot[] = {{"dt", 0, 0, DARAN_PORT_COMMAND_QUERY, dot_handler, ""}};
+    mock_t *m = mock_new();
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, dot, 1, NULL));
+    char line[DARAN_LINE_MAX + 1];
+    memset(line, ' ', DARAN_LINE_MAX);
+    line[DARAN_LINE_MAX] = '\0';
+    memcpy(line + DARAN_LINE_MAX - strlen("r axis2"), "r axis2", strlen("r axis2"));
+    ASSERT_ERROR(m, line, "invalid property");
+    mock_send_line(m, "dt 1");
+    TEST_ASSERT_EQUAL_STRING(".\n", m->out);
+    ASSERT_ERROR(m, line, "invalid property");
+}
+
 static void test_a_port_query_replies_through_daran_reply_with_the_request_checksum(void)
 {
     mock_t *m = port_mock();
@@ -627,6 +655,7 @@ int main(void)
     RUN_TEST(test_bad_port_command_lines_get_the_library_errors_and_no_call);
     RUN_TEST(test_a_handler_error_is_answered_with_its_phrase);
     RUN_TEST(test_port_commands_are_addressed_like_the_core_s);
+    RUN_TEST(test_a_path_that_ends_a_full_length_line_reads_nothing_past_it);
     RUN_TEST(test_a_port_query_replies_through_daran_reply_with_the_request_checksum);
 #if DARAN_ENABLE_HELP
     RUN_TEST(test_help_lists_the_port_commands_after_the_core_s);

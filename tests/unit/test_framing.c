@@ -466,6 +466,24 @@ static void test_process_line_between_the_bytes_of_a_line_never_runs_its_rest(vo
     ASSERT_REPLY(m, "0 0\n");
 }
 
+static void test_process_line_before_a_pending_line_s_bare_line_end_answers_it(void)
+{
+    /* D38 with nothing left of the pending line but its '\n': the line buffer
+     * is empty again, yet that '\n' ends a damaged line, not an empty one */
+    mock_t *m = mock_new();
+    mock_clear(m);
+    (void)daran_rx_write(&m->drive, "t 1 10", 6);
+    (void)daran_poll(&m->drive);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 1", 3));
+    ASSERT_REPLY(m, "0 0\n");
+    (void)daran_rx_write(&m->drive, "\n", 1);
+    (void)daran_poll(&m->drive);
+    ASSERT_REPLY(m, "error: line too long\n");
+    ASSERT_NO_EFFECT(m);
+    mock_send_line(m, "f 1");
+    ASSERT_REPLY(m, "0 0\n");
+}
+
 static void test_process_line_after_a_pending_line_that_ends_in_a_blank_never_runs_its_rest(void)
 {
     /* D38 again, the pending line "f " ending between fields (it has bytes,
@@ -492,6 +510,10 @@ static void test_process_line_returns_the_error_it_answered(void)
     ASSERT_REPLY(m, "error: unknown command\n");
     TEST_ASSERT_EQUAL_INT64(DARAN_ERR_INVALID_CHARACTER, daran_process_line(&m->drive, "f\0001", 3));
     ASSERT_REPLY(m, "error: invalid character\n");
+    /* the text comes without its line end: a '\n' is a character, even last */
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_INVALID_CHARACTER, daran_process_line(&m->drive, "t 1 10\n", 7));
+    ASSERT_REPLY(m, "error: invalid character\n");
+    ASSERT_NO_EFFECT(m);
     char buf[DARAN_LINE_MAX + 2];
     make_padded(buf, "f 1", DARAN_LINE_MAX + 1, "");
     TEST_ASSERT_EQUAL_INT64(DARAN_ERR_LINE_TOO_LONG, daran_process_line(&m->drive, buf, DARAN_LINE_MAX + 1));
@@ -542,6 +564,7 @@ int main(void)
     ADD(test_rx_byte_accepts_until_the_ring_is_full);
     ADD(test_rx_dropped_starts_at_zero);
     ADD(test_process_line_runs_a_framed_line);
+    ADD(test_process_line_before_a_pending_line_s_bare_line_end_answers_it);
     ADD(test_process_line_after_a_pending_line_that_ends_in_a_blank_never_runs_its_rest);
     ADD(test_process_line_returns_the_error_it_answered);
     ADD(test_process_line_between_the_bytes_of_a_line_never_runs_its_rest);
