@@ -88,6 +88,19 @@ static void test_line_of_exactly_128_bytes_is_accepted(void)
     ASSERT_REPLY(m, "0 0\n");
 }
 
+/* Its line end comes after the room is full, where the framer ends the last
+ * field on its own road: a ninth field there still only counts as one too
+ * many, and the command word keeps its length. */
+static void test_a_full_length_line_whose_last_byte_ends_a_ninth_field_has_too_many(void)
+{
+    mock_t *m = mock_new();
+    char buf[DARAN_LINE_MAX + 1];
+    make_padded(buf, "d 1 1 2 3 4 5 6", DARAN_LINE_MAX, "7");
+    ASSERT_ERROR(m, buf, "invalid command format");
+    make_padded(buf, "f 1 1 2 3 4 5 6", DARAN_LINE_MAX, "7");
+    ASSERT_ERROR(m, buf, "invalid command format");
+}
+
 static void test_line_of_128_bytes_with_checksum_is_accepted(void)
 {
     mock_t *m = mock_new();
@@ -535,6 +548,7 @@ int main(void)
     ADD(test_poll_counts_blank_lines_too);
     ADD(test_line_of_exactly_128_bytes_is_accepted);
     ADD(test_line_of_128_bytes_with_checksum_is_accepted);
+    ADD(test_a_full_length_line_whose_last_byte_ends_a_ninth_field_has_too_many);
     ADD(test_line_of_129_bytes_is_too_long_once_and_the_next_line_works);
     ADD(test_very_long_line_is_answered_once);
     ADD(test_overlong_line_with_invalid_byte_is_too_long);
