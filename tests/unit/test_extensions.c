@@ -363,6 +363,29 @@ static void test_a_path_that_ends_a_full_length_line_reads_nothing_past_it(void)
     ASSERT_ERROR(m, line, "invalid property");
 }
 
+/* The count is kept in a byte: 255 commands are a table, 256 are refused. */
+static void test_a_table_of_255_port_commands_is_taken_and_256_refused(void)
+{
+    static char words[256][4];
+    static daran_port_command_t table[256];
+    for (size_t i = 0; i < 256u; i++) {
+        words[i][0] = 'z';
+        words[i][1] = (char)('a' + i / 26u);
+        words[i][2] = (char)('a' + i % 26u);
+        daran_port_command_t command = {words[i], 1, 1, 0, sb_handler, ""};
+        table[i] = command;
+    }
+    mock_t *m = port_mock();
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, table, 255, &brake));
+    char line[16];
+    snprintf(line, sizeof line, "%s 1 3", words[254]);
+    ASSERT_SILENT(m, line);
+    TEST_ASSERT_EQUAL_UINT(1, brake.calls);
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_set_port_commands(&m->drive, table, 256, &brake));
+    ASSERT_SILENT(m, line); /* the table it had still works */
+    TEST_ASSERT_EQUAL_UINT(2, brake.calls);
+}
+
 static void test_a_port_query_replies_through_daran_reply_with_the_request_checksum(void)
 {
     mock_t *m = port_mock();
@@ -656,6 +679,7 @@ int main(void)
     RUN_TEST(test_a_handler_error_is_answered_with_its_phrase);
     RUN_TEST(test_port_commands_are_addressed_like_the_core_s);
     RUN_TEST(test_a_path_that_ends_a_full_length_line_reads_nothing_past_it);
+    RUN_TEST(test_a_table_of_255_port_commands_is_taken_and_256_refused);
     RUN_TEST(test_a_port_query_replies_through_daran_reply_with_the_request_checksum);
 #if DARAN_ENABLE_HELP
     RUN_TEST(test_help_lists_the_port_commands_after_the_core_s);
