@@ -335,12 +335,15 @@ static void test_port_commands_are_addressed_like_the_core_s(void)
     TEST_ASSERT_EQUAL_UINT(0, m->n_fwd);
 }
 
-/* `dot id`: a reply that starts with '.', which no core reply does. */
+/* `dot id`: a reply that starts with '.', which no core reply does, from a
+ * payload with no NUL after it (a read past it is an overflow under ASan). */
+static const char dot_payload[1] = {'.'};
+
 static daran_result_t dot_handler(daran_drive_t *drive, const daran_args_t *args, void *ctx)
 {
     (void)args;
     (void)ctx;
-    daran_reply(drive, ".", 1);
+    daran_reply(drive, dot_payload, sizeof dot_payload);
     return DARAN_OK;
 }
 

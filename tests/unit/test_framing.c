@@ -191,6 +191,19 @@ static void test_several_invalid_bytes_answer_once(void)
     ASSERT_NO_EFFECT(m);
 }
 
+/* The bytes given to daran_rx_write() and no more: these have no NUL
+ * after them, so a read past them is an overflow under ASan. */
+static const char exact_line[4] = {'f', ' ', '1', '\n'};
+
+static void test_the_receive_ring_reads_only_the_bytes_it_is_given(void)
+{
+    mock_t *m = mock_new();
+    mock_clear(m);
+    TEST_ASSERT_EQUAL_UINT64(sizeof exact_line, daran_rx_write(&m->drive, exact_line, sizeof exact_line));
+    TEST_ASSERT_EQUAL_UINT64(1, daran_poll(&m->drive));
+    ASSERT_REPLY(m, "0 0\n");
+}
+
 static void test_tab_and_printable_ascii_are_allowed(void)
 {
     mock_t *m = mock_new();
@@ -554,6 +567,7 @@ int main(void)
     ADD(test_overlong_line_with_invalid_byte_is_too_long);
     ADD(test_overlong_line_for_another_drive_is_still_answered);
     ADD(test_several_invalid_bytes_answer_once);
+    ADD(test_the_receive_ring_reads_only_the_bytes_it_is_given);
     ADD(test_tab_and_printable_ascii_are_allowed);
     for (unsigned b = 0; b <= 0xff; b++) {
         bool bad = b < 0x20 || b >= 0x7f;
@@ -567,6 +581,9 @@ int main(void)
     for (unsigned b = 0x81; b < 0xff; b += 0x1f)
         mock_suite_add(&s, invalid_byte_case, (void *)(uintptr_t)b,
                        "test_byte_0x%02X_is_an_invalid_character_and_the_next_line_works", b);
+    /* the ring's own mark of a damaged line end: received, it is a byte */
+    mock_suite_add(&s, invalid_byte_case, (void *)(uintptr_t)0x8Au,
+                   "test_byte_0x%02X_is_an_invalid_character_and_the_next_line_works", 0x8Au);
     static const size_t chunks[] = {1, 2, 3, 7, 13};
     for (size_t i = 0; i < sizeof chunks / sizeof chunks[0]; i++)
         mock_suite_add(&s, chunk_case, (void *)(uintptr_t)chunks[i],
