@@ -27,7 +27,7 @@ Usage: tests/unit/mutation_check.py [--count N] [--seed S] [--files a.c,b.c]
   --seed   sample seed (default 1)
   --files  restrict to these src/ files (default: all but version.c)
 Run by CTest as `mutation_unit` (label mutation, left out of the default
-test presets): ctest --preset host -L mutation.
+test presets): ctest --preset mutation.
 """
 import argparse
 import os
