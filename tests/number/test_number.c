@@ -448,6 +448,15 @@ static void test_the_shortest_text_that_round_trips_is_chosen(void)
     EXPECT_TEXT(daran_float_of(0x3F800001u), "1.0000001");
 }
 
+/* 0.00146484375 is exactly halfway between the 8-digit texts ...437 and
+ * ...438: the tie goes to the even last digit (docs/numbers.md). */
+static void test_a_tie_between_two_shortest_texts_goes_to_the_even_digit(void)
+{
+    EXPECT_TEXT(daran_float_of(0x3AC00000u), "0.0014648438");
+    EXPECT_TEXT(daran_float_of(0x3B600000u), "0.0034179688");
+    EXPECT_TEXT(daran_float_of(0x3C980000u), "0.018554688");
+}
+
 static void test_extremes_print(void)
 {
     EXPECT_TEXT(daran_float_of(0x7F7FFFFFu), "3.4028235e+38");
@@ -736,6 +745,7 @@ int main(void)
     RUN_TEST(test_spec_examples_print_scientifically);
     RUN_TEST(test_positional_range_ends_at_exponents_minus_5_and_8);
     RUN_TEST(test_the_shortest_text_that_round_trips_is_chosen);
+    RUN_TEST(test_a_tie_between_two_shortest_texts_goes_to_the_even_digit);
     RUN_TEST(test_extremes_print);
     RUN_TEST(test_powers_of_two_use_the_narrow_gap_below);
     RUN_TEST(test_zero_nan_and_infinity_print_as_words);

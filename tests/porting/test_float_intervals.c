@@ -87,6 +87,11 @@ static void test_negative_decimal_and_exponent_ends(void)
     accepted("w wide_value 0.1 1", DARAN_PROP_WIDE_VALUE, 0.1f);
     refused("w wide_value 0.10000001 1");
     refused("w wide_value -1000.0001 1");
+    /* a range text may start with any digit */
+    accepted("w nine 9 1", DARAN_PROP_NINE, 9.0f);
+    accepted("w nine 9.25 1", DARAN_PROP_NINE, 9.25f);
+    refused("w nine 8.5 1");
+    refused("w nine 10 1");
 }
 
 static void test_sign_ranges_still_hold_beside_intervals(void)

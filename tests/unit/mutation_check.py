@@ -5,20 +5,29 @@ change in src/*.c make at least one unit test fail?
 Copies the source tree (without build/ and .git/) to a scratch directory,
 builds the unit test programs there (gcc, Debug, ASan + UBSan, so a mutant
 that only writes out of bounds is caught too), then for a random sample of
-mutants changes one operator (== != < <= > >= && || and +1u/-1u), rebuilds,
-runs every unit program (tests/unit's, tests/number's and the bridge's) and restores the
-file.
+mutants changes one operator (== != < <= > >= && || and +1u/-1u), runs the
+unit programs (tests/unit's, tests/number's and the bridge's) until one fails
+and restores the file. Each program is rebuilt only when its turn comes, and
+the program that last killed a mutant of a file runs first for that file's
+next mutant, so a killed mutant costs one link and one run, not fifteen; a
+survivor has passed every program. A program that outlives 20 times its
+unmutated run (at least 60 s; a mutant that loops) counts as a kill, and the
+summary says how many kills were timeouts, so a loaded machine cannot pass
+off a slow run as a kill unnoticed.
 
 A survivor is a gap in the tests unless it is an equivalent mutant listed,
 with the reason, in mutation_equivalent.txt (one "file: before -> after" per
-line, text as printed). Exit status 1 when an unlisted mutant survives.
+line, text as printed). Exit status 1 when an unlisted mutant survives, or
+when a listed one of the files checked is no longer a mutant of the source
+(stale: its line changed, and the reason may no longer hold).
 
 Usage: tests/unit/mutation_check.py [--count N] [--seed S] [--files a.c,b.c]
-  --count  mutants to run (default 120; 0: every mutant, about 20 minutes)
+  --count  mutants to run (default 120; 0: every mutant, about an hour on a
+           busy 2-core machine)
   --seed   sample seed (default 1)
   --files  restrict to these src/ files (default: all but version.c)
 Run by CTest as `mutation_unit` (label mutation, left out of the default
-test presets): ctest --preset host -L mutation.
+test presets): ctest --preset mutation.
 """
 import argparse
 import os
@@ -28,6 +37,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
 OPS = [(r"(?<![<>=!])==(?!=)", "!="), (r"!=", "=="), (r"(?<![<-])<=", "<"),
        (r"(?<![<>-])<(?![<=])", "<="), (r"(?<![->])>=", ">"), (r"(?<![->])>(?![>=])", ">="),
@@ -59,6 +69,11 @@ def equivalent_mutants(repo):
     return keys
 
 
+def mutant_key(f, line, a, b, rep):
+    """How a mutant is printed and listed: "file: before -> after"."""
+    return f"{f}: {line.strip()} -> {(line[:a] + rep + line[b:]).strip()}"
+
+
 def code_lines(text):
     """Yield (index, code part) of lines that are not comments or directives."""
     in_comment = False
@@ -75,16 +90,32 @@ def code_lines(text):
         yield i, line.split("/*")[0]
 
 
-def killed_by_tests(build, programs):
+def run_times(build, programs):
+    """Wall time of each program's unmutated run, or None when one fails."""
+    times = {}
     for program in programs:
+        start = time.monotonic()
+        if subprocess.run([os.path.join(build, program)], capture_output=True).returncode:
+            return None
+        times[program] = time.monotonic() - start
+    return times
+
+
+def verdict(build, programs, timeouts):
+    """Build and run the programs in turn: (outcome, the program that failed,
+    whether it timed out), outcome "broken" when one does not build, "killed"
+    when one fails, else "survived"."""
+    for program in programs:
+        if subprocess.run(["ninja", "-C", build, program], capture_output=True).returncode:
+            return "broken", None, False
         try:
-            r = subprocess.run([os.path.join(build, program)],
-                               capture_output=True, timeout=60)
+            r = subprocess.run([os.path.join(build, program)], capture_output=True,
+                               timeout=timeouts[program])
             if r.returncode != 0:
-                return True
+                return "killed", program, False
         except subprocess.TimeoutExpired:
-            return True
-    return False
+            return "killed", program, True
+    return "survived", None, False
 
 
 def main():
@@ -97,6 +128,7 @@ def main():
     repo = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
     targets = test_programs(repo)
     accepted = equivalent_mutants(repo)
+    started = time.monotonic()
     work = tempfile.mkdtemp(prefix="daran-mutation-")
     tree, build = os.path.join(work, "tree"), os.path.join(work, "build")
     shutil.copytree(repo, tree, ignore=shutil.ignore_patterns("build", ".git"))
@@ -104,27 +136,36 @@ def main():
                     "-DCMAKE_BUILD_TYPE=Debug", "-DDARAN_SANITIZE=ON", "-DDARAN_BUILD_SIM=OFF",
                     "-DDARAN_BUILD_DEMO=OFF"], check=True, capture_output=True)
     subprocess.run(["ninja", "-C", build] + targets, check=True, capture_output=True)
-    if killed_by_tests(build, targets):
+    baseline = run_times(build, targets)
+    if baseline is None:
         print("the unmutated core fails its unit tests")
         return 1
+    timeouts = {p: max(60.0, 20.0 * t) for p, t in baseline.items()}
 
     src = os.path.join(tree, "src")
     files = [f for f in sorted(os.listdir(src)) if f.endswith(".c") and f != "version.c"
              and (only is None or f in only)]
     mutants = []
+    keys = set()
     for f in files:
         text = open(os.path.join(src, f)).read()
+        lines = text.split("\n")
         for i, code in code_lines(text):
             for pat, rep in OPS:
                 for m in re.finditer(pat, code):
                     mutants.append((f, i, m.start(), m.end(), rep))
+                    keys.add(mutant_key(f, lines[i], m.start(), m.end(), rep))
+    stale = sorted(k for k in accepted if k.split(":")[0] in files and k not in keys)
+    for key in stale:
+        print(f"STALE (listed, no longer a mutant): {key}", flush=True)
     random.seed(args.seed)
     sample = mutants if args.count <= 0 else random.sample(mutants, min(args.count, len(mutants)))
     print(f"{len(mutants)} possible mutants in {len(files)} files, running {len(sample)} "
           f"against {len(targets)} unit programs", flush=True)
 
-    killed = equivalent = broken = 0
+    killed = equivalent = broken = timed_out = 0
     gaps = []
+    order = {f: list(targets) for f in files}  # the last killer of each file first
     for f, i, a, b, rep in sample:
         path = os.path.join(src, f)
         original = open(path).read()
@@ -133,12 +174,16 @@ def main():
         lines[i] = before[:a] + rep + before[b:]
         open(path, "w").write("\n".join(lines))
         try:
-            if subprocess.run(["ninja", "-C", build] + targets, capture_output=True).returncode:
+            outcome, killer, timeout = verdict(build, order[f], timeouts)
+            if outcome == "broken":
                 broken += 1
-            elif killed_by_tests(build, targets):
+            elif outcome == "killed":
                 killed += 1
+                timed_out += timeout
+                order[f].remove(killer)
+                order[f].insert(0, killer)
             else:
-                key = f"{f}: {before.strip()} -> {lines[i].strip()}"
+                key = mutant_key(f, before, a, b, rep)
                 if key in accepted:
                     equivalent += 1
                 else:
@@ -146,10 +191,11 @@ def main():
                     print(f"SURVIVED {f}:{i + 1}: {key}", flush=True)
         finally:
             open(path, "w").write(original)
-    print(f"killed {killed}, equivalent {equivalent}, survived {len(gaps)}, "
-          f"did not build {broken}", flush=True)
+    print(f"killed {killed} ({timed_out} by a timeout), equivalent {equivalent}, "
+          f"survived {len(gaps)}, did not build {broken}, stale entries {len(stale)}; "
+          f"{time.monotonic() - started:.0f} s", flush=True)
     shutil.rmtree(work)
-    return 0 if not gaps else 1
+    return 0 if not gaps and not stale else 1
 
 
 if __name__ == "__main__":

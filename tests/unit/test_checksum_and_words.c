@@ -228,6 +228,30 @@ static void test_checksum_state_does_not_leak_to_the_next_line(void)
     ASSERT_ERROR(m, "x 1", "unknown command");
 }
 
+/* A line of exactly DARAN_LINE_MAX bytes has no line end stored after it:
+ * the byte past it is the instance's reply buffer, here holding the last
+ * reply's '1'. The checksum field ends with the line, whatever follows. */
+static void test_a_full_length_line_ends_its_checksum_at_its_last_byte(void)
+{
+    mock_t *m = mock_new();
+    TEST_ASSERT_EQUAL_STRING("1\n", ASSERT_QUERY(m, "r axis0.config.can_node_id"));
+    char line[DARAN_LINE_MAX + 1];
+    size_t before_star = DARAN_LINE_MAX - 4u; /* then '*' and three digits */
+    memset(line, ' ', before_star);
+    memcpy(line, "r axis0.config.can_node_id", strlen("r axis0.config.can_node_id"));
+    line[before_star] = '\0';
+    snprintf(line + before_star, 5, "*%03u", mock_xor(line));
+    TEST_ASSERT_EQUAL_UINT64(DARAN_LINE_MAX, strlen(line));
+    char want[32];
+    mock_reply_line(want, sizeof want, "1", true);
+    TEST_ASSERT_EQUAL_STRING(want, ASSERT_QUERY(m, line));
+    line[before_star] = '\0';
+    snprintf(line + before_star, 5, "*%03u", mock_xor(line) ^ 1u);
+    mock_reply_line(want, sizeof want, "error: checksum mismatch", true);
+    mock_send_line(m, line);
+    ASSERT_REPLY(m, want);
+}
+
 /* ---- fields ---- */
 
 static void test_multiple_spaces_separate_fields(void)
@@ -365,7 +389,9 @@ static void test_property_paths_are_case_sensitive(void)
 }
 
 static const char *const unknown_words[] = {"x 1", "tt 1", "m 1", "s 1", "mm 1", "sss 1", "ff 1",
-                                            "t1 1", "1 1", "mx 0", "sa 1", "-t 1", "z 1", "ma 0"};
+                                            "t1 1", "1 1", "mx 0", "sa 1", "-t 1", "z 1", "ma 0",
+                                            /* a known one-letter word, then more */
+                                            "fff 1", "ttt 1 10"};
 
 static void unknown_word_case(const void *row_arg)
 {
@@ -407,6 +433,7 @@ int main(void)
     ADD(test_line_that_is_only_a_checksum_is_an_unknown_command);
     ADD(test_checksummed_silent_commands_stay_silent);
     ADD(test_checksum_state_does_not_leak_to_the_next_line);
+    ADD(test_a_full_length_line_ends_its_checksum_at_its_last_byte);
     ADD(test_multiple_spaces_separate_fields);
     ADD(test_tabs_separate_fields);
     ADD(test_leading_and_trailing_blanks_are_ignored);

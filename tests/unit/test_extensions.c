@@ -291,6 +291,7 @@ static void test_bad_port_command_lines_get_the_library_errors_and_no_call(void)
         {"bu 1 4294967296", "value out of range"}, {"bu 1 1001", "value out of range"},
         {"bu 1 -1", "value out of range"},       {"bu 1 1.5", "invalid value"},
         {"bq 1 4", "invalid mode"},              {"bq 1 2.5", "invalid value"},
+        {"bq 1 32", "invalid mode"},             {"bq 1 33", "invalid mode"}, /* past the set's bits */
         {"bq 1 1 2", "invalid command format"},
     };
     mock_t *m = port_mock();
@@ -332,6 +333,60 @@ static void test_port_commands_are_addressed_like_the_core_s(void)
     mock_send_line(m, "bq 0"); /* a query sent to every drive: answered, not forwarded */
     TEST_ASSERT_EQUAL_STRING("0 0 1 0.1\n", m->out);
     TEST_ASSERT_EQUAL_UINT(0, m->n_fwd);
+}
+
+/* `dot id`: a reply that starts with '.', which no core reply does, from a
+ * payload with no NUL after it (a read past it is an overflow under ASan). */
+static const char dot_payload[1] = {'.'};
+
+static daran_result_t dot_handler(daran_drive_t *drive, const daran_args_t *args, void *ctx)
+{
+    (void)args;
+    (void)ctx;
+    daran_reply(drive, dot_payload, sizeof dot_payload);
+    return DARAN_OK;
+}
+
+/* A line of exactly DARAN_LINE_MAX bytes has no line end stored after it, so
+ * the byte past a path that ends it is the reply buffer's first: after a
+ * port reply of ".", "axis2" is still a path without its dot (a system
+ * path, answered here), not one of drive 2's. */
+static void test_a_path_that_ends_a_full_length_line_reads_nothing_past_it(void)
+{
+    static const daran_port_command_t dot[] = {{"dt", 0, 0, DARAN_PORT_COMMAND_QUERY, dot_handler, ""}};
+    mock_t *m = mock_new();
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, dot, 1, NULL));
+    char line[DARAN_LINE_MAX + 1];
+    memset(line, ' ', DARAN_LINE_MAX);
+    line[DARAN_LINE_MAX] = '\0';
+    memcpy(line + DARAN_LINE_MAX - strlen("r axis2"), "r axis2", strlen("r axis2"));
+    ASSERT_ERROR(m, line, "invalid property");
+    mock_send_line(m, "dt 1");
+    TEST_ASSERT_EQUAL_STRING(".\n", m->out);
+    ASSERT_ERROR(m, line, "invalid property");
+}
+
+/* The count is kept in a byte: 255 commands are a table, 256 are refused. */
+static void test_a_table_of_255_port_commands_is_taken_and_256_refused(void)
+{
+    static char words[256][4];
+    static daran_port_command_t table[256];
+    for (size_t i = 0; i < 256u; i++) {
+        words[i][0] = 'z';
+        words[i][1] = (char)('a' + i / 26u);
+        words[i][2] = (char)('a' + i % 26u);
+        daran_port_command_t command = {words[i], 1, 1, 0, sb_handler, ""};
+        table[i] = command;
+    }
+    mock_t *m = port_mock();
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, table, 255, &brake));
+    char line[16];
+    snprintf(line, sizeof line, "%s 1 3", words[254]);
+    ASSERT_SILENT(m, line);
+    TEST_ASSERT_EQUAL_UINT(1, brake.calls);
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_set_port_commands(&m->drive, table, 256, &brake));
+    ASSERT_SILENT(m, line); /* the table it had still works */
+    TEST_ASSERT_EQUAL_UINT(2, brake.calls);
 }
 
 static void test_a_port_query_replies_through_daran_reply_with_the_request_checksum(void)
@@ -626,6 +681,8 @@ int main(void)
     RUN_TEST(test_bad_port_command_lines_get_the_library_errors_and_no_call);
     RUN_TEST(test_a_handler_error_is_answered_with_its_phrase);
     RUN_TEST(test_port_commands_are_addressed_like_the_core_s);
+    RUN_TEST(test_a_path_that_ends_a_full_length_line_reads_nothing_past_it);
+    RUN_TEST(test_a_table_of_255_port_commands_is_taken_and_256_refused);
     RUN_TEST(test_a_port_query_replies_through_daran_reply_with_the_request_checksum);
 #if DARAN_ENABLE_HELP
     RUN_TEST(test_help_lists_the_port_commands_after_the_core_s);

@@ -88,6 +88,19 @@ static void test_line_of_exactly_128_bytes_is_accepted(void)
     ASSERT_REPLY(m, "0 0\n");
 }
 
+/* Its line end comes after the room is full, where the framer ends the last
+ * field on its own road: a ninth field there still only counts as one too
+ * many, and the command word keeps its length. */
+static void test_a_full_length_line_whose_last_byte_ends_a_ninth_field_has_too_many(void)
+{
+    mock_t *m = mock_new();
+    char buf[DARAN_LINE_MAX + 1];
+    make_padded(buf, "d 1 1 2 3 4 5 6", DARAN_LINE_MAX, "7");
+    ASSERT_ERROR(m, buf, "invalid command format");
+    make_padded(buf, "f 1 1 2 3 4 5 6", DARAN_LINE_MAX, "7");
+    ASSERT_ERROR(m, buf, "invalid command format");
+}
+
 static void test_line_of_128_bytes_with_checksum_is_accepted(void)
 {
     mock_t *m = mock_new();
@@ -176,6 +189,19 @@ static void test_several_invalid_bytes_answer_once(void)
     mock_send_bytes(m, bad, sizeof bad - 1, 0);
     ASSERT_REPLY(m, "error: invalid character\n");
     ASSERT_NO_EFFECT(m);
+}
+
+/* The bytes given to daran_rx_write() and no more: these have no NUL
+ * after them, so a read past them is an overflow under ASan. */
+static const char exact_line[4] = {'f', ' ', '1', '\n'};
+
+static void test_the_receive_ring_reads_only_the_bytes_it_is_given(void)
+{
+    mock_t *m = mock_new();
+    mock_clear(m);
+    TEST_ASSERT_EQUAL_UINT64(sizeof exact_line, daran_rx_write(&m->drive, exact_line, sizeof exact_line));
+    TEST_ASSERT_EQUAL_UINT64(1, daran_poll(&m->drive));
+    ASSERT_REPLY(m, "0 0\n");
 }
 
 static void test_tab_and_printable_ascii_are_allowed(void)
@@ -466,6 +492,24 @@ static void test_process_line_between_the_bytes_of_a_line_never_runs_its_rest(vo
     ASSERT_REPLY(m, "0 0\n");
 }
 
+static void test_process_line_before_a_pending_line_s_bare_line_end_answers_it(void)
+{
+    /* D38 with nothing left of the pending line but its '\n': the line buffer
+     * is empty again, yet that '\n' ends a damaged line, not an empty one */
+    mock_t *m = mock_new();
+    mock_clear(m);
+    (void)daran_rx_write(&m->drive, "t 1 10", 6);
+    (void)daran_poll(&m->drive);
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_process_line(&m->drive, "f 1", 3));
+    ASSERT_REPLY(m, "0 0\n");
+    (void)daran_rx_write(&m->drive, "\n", 1);
+    (void)daran_poll(&m->drive);
+    ASSERT_REPLY(m, "error: line too long\n");
+    ASSERT_NO_EFFECT(m);
+    mock_send_line(m, "f 1");
+    ASSERT_REPLY(m, "0 0\n");
+}
+
 static void test_process_line_after_a_pending_line_that_ends_in_a_blank_never_runs_its_rest(void)
 {
     /* D38 again, the pending line "f " ending between fields (it has bytes,
@@ -492,6 +536,10 @@ static void test_process_line_returns_the_error_it_answered(void)
     ASSERT_REPLY(m, "error: unknown command\n");
     TEST_ASSERT_EQUAL_INT64(DARAN_ERR_INVALID_CHARACTER, daran_process_line(&m->drive, "f\0001", 3));
     ASSERT_REPLY(m, "error: invalid character\n");
+    /* the text comes without its line end: a '\n' is a character, even last */
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_INVALID_CHARACTER, daran_process_line(&m->drive, "t 1 10\n", 7));
+    ASSERT_REPLY(m, "error: invalid character\n");
+    ASSERT_NO_EFFECT(m);
     char buf[DARAN_LINE_MAX + 2];
     make_padded(buf, "f 1", DARAN_LINE_MAX + 1, "");
     TEST_ASSERT_EQUAL_INT64(DARAN_ERR_LINE_TOO_LONG, daran_process_line(&m->drive, buf, DARAN_LINE_MAX + 1));
@@ -513,11 +561,13 @@ int main(void)
     ADD(test_poll_counts_blank_lines_too);
     ADD(test_line_of_exactly_128_bytes_is_accepted);
     ADD(test_line_of_128_bytes_with_checksum_is_accepted);
+    ADD(test_a_full_length_line_whose_last_byte_ends_a_ninth_field_has_too_many);
     ADD(test_line_of_129_bytes_is_too_long_once_and_the_next_line_works);
     ADD(test_very_long_line_is_answered_once);
     ADD(test_overlong_line_with_invalid_byte_is_too_long);
     ADD(test_overlong_line_for_another_drive_is_still_answered);
     ADD(test_several_invalid_bytes_answer_once);
+    ADD(test_the_receive_ring_reads_only_the_bytes_it_is_given);
     ADD(test_tab_and_printable_ascii_are_allowed);
     for (unsigned b = 0; b <= 0xff; b++) {
         bool bad = b < 0x20 || b >= 0x7f;
@@ -531,6 +581,9 @@ int main(void)
     for (unsigned b = 0x81; b < 0xff; b += 0x1f)
         mock_suite_add(&s, invalid_byte_case, (void *)(uintptr_t)b,
                        "test_byte_0x%02X_is_an_invalid_character_and_the_next_line_works", b);
+    /* the ring's own mark of a damaged line end: received, it is a byte */
+    mock_suite_add(&s, invalid_byte_case, (void *)(uintptr_t)0x8Au,
+                   "test_byte_0x%02X_is_an_invalid_character_and_the_next_line_works", 0x8Au);
     static const size_t chunks[] = {1, 2, 3, 7, 13};
     for (size_t i = 0; i < sizeof chunks / sizeof chunks[0]; i++)
         mock_suite_add(&s, chunk_case, (void *)(uintptr_t)chunks[i],
@@ -542,6 +595,7 @@ int main(void)
     ADD(test_rx_byte_accepts_until_the_ring_is_full);
     ADD(test_rx_dropped_starts_at_zero);
     ADD(test_process_line_runs_a_framed_line);
+    ADD(test_process_line_before_a_pending_line_s_bare_line_end_answers_it);
     ADD(test_process_line_after_a_pending_line_that_ends_in_a_blank_never_runs_its_rest);
     ADD(test_process_line_returns_the_error_it_answered);
     ADD(test_process_line_between_the_bytes_of_a_line_never_runs_its_rest);
