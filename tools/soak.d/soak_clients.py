@@ -16,6 +16,8 @@ from soak_links import PROPERTIES, LinkDown, NoAnswer, f32, same_value
 
 LANDING_TOLERANCE = 0.5      # deg: the controller's tracking after trajectory_done
 SETTLE = 0.1                 # s after trajectory_done before the landing is read
+# what a fault may take: the gateway's and the CAN client's "no answer"
+FAULT_CAUSES = ("error: no reply", "error: bus error", "CAN: no reply")
 RETRY_FOR = 20.0             # s: a drive that answers nothing this long outside faults is a defect
 MOVE_VEL = 300               # r/min (within the CAN frames' s16 x 100)
 MOVE_ACC = 300               # (r/min)/s
@@ -48,7 +50,7 @@ def trapezoid_time(distance, vel, acc):
 
 def random_value(rng, kind):
     if kind == "f32":
-        return f32(round(rng.uniform(0.01, 500.0), rng.choice((0, 1, 2, 3))))
+        return f32(round(rng.uniform(1.0, 500.0), rng.choice((0, 1, 2, 3))))
     if kind == "s32":
         return rng.randint(-2 ** 31, 2 ** 31 - 1)
     return rng.randint(0, 1)
@@ -84,6 +86,7 @@ class Client:
                         self.verify(drive)
                     else:
                         op = self.rng.choices(ops, weights)[0]
+                        self.stats.trace("%s: drive %d: %s" % (self.name, drive, op))
                         getattr(self, op)(drive)
             except LinkDown as err:
                 self.stats.failure(self.name, "link down: %s" % str(err)[:40], True)
@@ -98,10 +101,12 @@ class Client:
     # -- answers that a fault may take -----------------------------------
 
     def failed(self, drive, cause, since):
+        """A call that a fault may have taken (counted by cause); any other
+        error is a defect: the soak sends only what a drive accepts."""
         in_fault = self.faults.overlapped(since, time.monotonic(), drive)
         self.stats.failure(self.name, cause, in_fault)
-        if self.after_failure:
-            self.after_failure()
+        if not cause.startswith(FAULT_CAUSES):
+            self.stats.defect("%s: drive %d answered %r" % (self.name, drive, cause))
         return in_fault
 
     def settled(self, drive, call, what):
@@ -117,6 +122,9 @@ class Client:
             if time.monotonic() - began > RETRY_FOR:
                 raise Unrecovered("drive %d: %s unanswered for %.0f s" % (drive, what, RETRY_FOR))
             self.faults.wait_quiet(drive, RETRY_FOR)
+            if self.after_failure:
+                # what a fault held back comes out when it ends: not an answer
+                self.after_failure()
 
     def read(self, drive, name, kind):
         path = self.paths[drive]
@@ -237,6 +245,7 @@ class Client:
                                                    else self.rng.choice((-1, 1)))
         distance = f32(round(distance, 2))
         target = start + distance
+        self.stats.trace("%s: drive %d: from %.3f by %.2f to %.3f" % (self.name, drive, start, distance, target))
         began = time.monotonic()
         if relative:
             planned = math.ceil(trapezoid_time(distance, MOVE_VEL, MOVE_ACC) * 130) / 100.0

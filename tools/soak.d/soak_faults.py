@@ -123,10 +123,12 @@ class Orchestrator:
         if kind == "can-lose":
             directive += " %d" % self.rng.randint(1, 3)
         window = self.faults.begin(directive, FAULT_HITS[node])
+        self.stats.trace("fault: " + directive)
         try:
             self.sim.directive(directive)
             self.pause(self.rng.uniform(0.05, 1.2))
             self.sim.directive("!fault %d can-recover" % node)
+            self.stats.trace("fault: !fault %d can-recover" % node)
         finally:
             self.faults.end(window)
         self.stats.event("bus faults: %s (node %s)" % (kind, "0 (the bus)" if node == 0 else "N"))
@@ -140,6 +142,7 @@ class Orchestrator:
         try:
             with self.ascii_link.lock:
                 self.sim.directive("!power-cycle %d" % (0 if len(drives) > 1 else drives[0]))
+                self.stats.trace("fault: !power-cycle %s" % (drives,))
                 time.sleep(0.05)
             for drive in drives:
                 self.owner(drive).models[drive].power_lost()
@@ -179,6 +182,7 @@ class Orchestrator:
                 self.stats.failure("faults", err.cause, False)
             time.sleep(self.rng.uniform(0.0, 0.004))
             self.sim.kill()
+            self.stats.trace("fault: kill -9 after a save of drive %d" % drive)
             # the save may have happened: NVM holds the old values or these
             for each, each_kind, _ in PROPERTIES:
                 value = model.live.get(each)

@@ -114,6 +114,7 @@ class AsciiLink:
         checksum). Timed as a call of @client."""
         with self.lock:
             line, checksummed = self._line(text)
+            self.stats.trace("%s: > %s" % (client, line))
             started = self._write(line)
             reply = self._checked(self._read_line(), checksummed)
             self.stats.call(client, time.monotonic() - started)
@@ -126,6 +127,7 @@ class AsciiLink:
         with self.lock:
             line, checksummed = self._line(text)
             fence, fence_checksummed = self._line("i 1")
+            self.stats.trace("%s: > %s (+ fence)" % (client, line))
             started = self._write(line + "\n" + fence)
             first = self._read_line()
             error = None
@@ -157,7 +159,9 @@ class AsciiLink:
             self.lost_lines += 1
             self._resync()
             raise NoAnswer("pty: line unanswered")
-        return raw.decode("ascii", errors="replace").rstrip("\r\n")
+        reply = raw.decode("ascii", errors="replace").rstrip("\r\n")
+        self.stats.trace("   < %s" % reply)
+        return reply
 
     def _checked(self, text, checksummed):
         """@text's payload; its checksum is there exactly when the request
@@ -260,16 +264,20 @@ class CanLink:
     def send(self, ident, data):
         if self.bus is None:
             raise LinkDown("slcan closed")
+        self.stats.trace("can: > %03X %s" % (ident, bytes(data).hex()))
         try:
             self.bus.send(self.can.Message(arbitration_id=ident, is_extended_id=False,
                                            data=data))
         except (self.can.CanError, OSError) as err:
             raise LinkDown("slcan: %s" % err)
 
-    def drain(self):
-        """Frames that came while nobody asked (late replies after a fault)."""
+    def drain(self, wait=0.02):
+        """Frames that came while nobody asked: late replies to requests
+        that a fault held back (an unplugged adapter sends its queue when
+        plugged in again). A status frame names no request: taken for the
+        next request's answer, it would be one behind from then on."""
         with self.lock:
-            while self._recv(0.0) is not None:
+            while self._recv(wait) is not None:
                 self.foreign_frames += 1
 
     def _recv(self, timeout):
@@ -283,6 +291,7 @@ class CanLink:
         true, within TIMEOUT, as (id, data); every other frame is someone
         else's."""
         with self.lock:
+            self.drain(0.0)
             started = time.monotonic()
             self.send(ident, data)
             deadline = started + self.TIMEOUT
@@ -294,6 +303,7 @@ class CanLink:
                 if msg is None:
                     continue
                 if not msg.is_extended_id and msg.dlc == 8 and matches(msg):
+                    self.stats.trace("can: < %03X %s" % (msg.arbitration_id, bytes(msg.data).hex()))
                     self.stats.call(client, time.monotonic() - started)
                     return msg.arbitration_id, bytes(msg.data)
                 self.foreign_frames += 1

@@ -25,6 +25,13 @@ class Stats:
         self.samples = []                         # (seconds, pid, rss kB, fds)
         self.landing_errors = []
         self.started = time.monotonic()
+        self.trace_file = None
+
+    def trace(self, text):
+        """A line in the --trace file (what each client did, each fault)."""
+        if self.trace_file is not None:
+            with self.lock:
+                self.trace_file.write("%9.3f %s\n" % (time.monotonic() - self.started, text))
 
     def call(self, client, seconds):
         with self.lock:
@@ -36,6 +43,7 @@ class Stats:
             return sum(self.calls.values())
 
     def failure(self, client, cause, in_fault):
+        self.trace("%s: failed: %s%s" % (client, cause, "" if in_fault else " OUTSIDE any fault"))
         with self.lock:
             self.failures[(client, cause, in_fault)] += 1
 
@@ -44,6 +52,7 @@ class Stats:
             self.events[name] += count
 
     def defect(self, text):
+        self.trace("DEFECT " + text)
         with self.lock:
             self.defects.append("%7.1f s  %s" % (time.monotonic() - self.started, text))
         print("soak: DEFECT: %s" % text, flush=True)
