@@ -12,7 +12,7 @@ start + 2 x distance (run twice), or a shaft that moved between moves."""
 import math
 import time
 
-from soak_links import PROPERTIES, LinkDown, NoAnswer, f32, same_value
+from soak_links import PROPERTIES, LinkDown, NoAnswer, f32, same_value, shown
 
 LANDING_TOLERANCE = 0.5      # deg: the controller's tracking after trajectory_done
 SETTLE = 0.1                 # s after trajectory_done before the landing is read
@@ -71,6 +71,9 @@ class Client:
         self.stop = stop
         self.peek_path = peek               # a path to another client's drive, reads only
         self.after_failure = None           # e.g. drain the CAN link of late frames
+        # --inject: defects this client makes once on purpose, to show that
+        # the checks catch them
+        self.inject = set()
 
     # -- the loop -------------------------------------------------------
 
@@ -86,6 +89,10 @@ class Client:
                         self.verify(drive)
                     else:
                         op = self.rng.choices(ops, weights)[0]
+                        if "wrong-value" in self.inject:
+                            op = "write_read"
+                        elif "double-move" in self.inject:
+                            op = "move_by"
                         self.stats.trace("%s: drive %d: %s" % (self.name, drive, op))
                         getattr(self, op)(drive)
             except LinkDown as err:
@@ -153,8 +160,9 @@ class Client:
             got = self.read(drive, name, kind)
             possible = model.saved.get(name)
             if possible is not None and not any(same_value(kind, got, v) for v in possible):
-                self.stats.defect("%s: drive %d lost its NVM: %s reads %r after power came "
-                                  "back, saved was %r" % (self.name, drive, name, got, possible))
+                self.stats.defect("%s: drive %d lost its NVM: %s reads %s after power came "
+                                  "back, saved was %s" % (self.name, drive, name, shown(got),
+                                                          " or ".join(map(shown, possible))))
             model.live[name] = got
             model.saved[name] = [got]
         model.verify_pending = False
@@ -170,8 +178,13 @@ class Client:
         new = value
         while new is None or same_value(kind, new, old):
             new = random_value(self.rng, kind)
+        sent = new
+        if "wrong-value" in self.inject:
+            self.inject.discard("wrong-value")
+            while same_value(kind, sent, new) or same_value(kind, sent, old):
+                sent = random_value(self.rng, kind)
         began = time.monotonic()
-        delivered = self.send(drive, lambda: path.write(name, kind, new))
+        delivered = self.send(drive, lambda: path.write(name, kind, sent))
         got = self.read(drive, name, kind)
         ended = time.monotonic()
         if same_value(kind, got, new):
@@ -182,8 +195,8 @@ class Client:
             model.live[name] = old
             self.stats.event("writes lost in a fault window (old value read back)")
         else:
-            self.stats.defect("%s: drive %d: w %s %r then r gave %r (it held %r)" %
-                              (self.name, drive, name, new, got, old))
+            self.stats.defect("%s: drive %d: w %s %s then r gave %s (it held %s)" %
+                              (self.name, drive, name, shown(new), shown(got), shown(old)))
             model.live[name] = got
         return new
 
@@ -210,8 +223,9 @@ class Client:
             name, kind, _ = self.rng.choice(PROPERTIES)
             got = self.read(drive, name, kind)
             if not same_value(kind, got, self.models[drive].live[name]):
-                self.stats.defect("%s: drive %d: r %s gave %r, it holds %r" %
-                                  (self.name, drive, name, got, self.models[drive].live[name]))
+                self.stats.defect("%s: drive %d: r %s gave %s, it holds %s" %
+                                  (self.name, drive, name, shown(got),
+                                   shown(self.models[drive].live[name])))
             return
         # a read of another client's drive: its answer is matched among
         # the bridge's frames to and from that drive
@@ -250,6 +264,11 @@ class Client:
         if relative:
             planned = math.ceil(trapezoid_time(distance, MOVE_VEL, MOVE_ACC) * 130) / 100.0
             sent = self.send(drive, lambda: path.move_by(distance, planned, MOVE_ACC))
+            if "double-move" in self.inject:
+                # as a client that resends a move it thinks was lost
+                self.inject.discard("double-move")
+                time.sleep(planned + 0.2)
+                self.send(drive, lambda: path.move_by(distance, planned, MOVE_ACC))
         else:
             planned = trapezoid_time(distance, MOVE_VEL, MOVE_ACC)
             sent = self.send(drive, lambda: path.move_to(target, MOVE_VEL, MOVE_ACC))

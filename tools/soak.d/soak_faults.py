@@ -33,10 +33,13 @@ class Orchestrator:
         self.duration = duration
         self.started = time.monotonic()
         self.pids = []
-        self.expected_death = False
+        self.inject_nvm_loss = False
         # kill -9 during a save: once in a short run, every ~5 minutes in a long one
-        self.kill_every = duration / 2.0 if duration < 600 else 300.0
-        self.next_kill = self.started + self.kill_every * self.rng.uniform(0.8, 1.0)
+        self.schedule_kills(duration / 2.0 if duration < 600 else 300.0)
+
+    def schedule_kills(self, every):
+        self.kill_every = every
+        self.next_kill = self.started + every * self.rng.uniform(0.8, 1.0)
 
     def owner(self, drive):
         return next(c for c in self.clients if drive in c.paths)
@@ -205,6 +208,8 @@ class Orchestrator:
         try:
             if not self.sim.alive():
                 self.crashed_at_end()
+            if self.inject_nvm_loss:
+                self.lose_nvm()
             self.ascii_link.close()
             self.can_link.close()
             if not self.sim.stop():
@@ -226,6 +231,18 @@ class Orchestrator:
             self.can_link.close()
             self.sim.stop()
             self.gate.give()
+
+    def lose_nvm(self):
+        """--inject nvm-loss: drive 1 saves a new value, then its stored
+        config is damaged (`!fault 1 nvm-corrupt`): the final check must
+        find it lost."""
+        client = self.owner(1)
+        if client.models[1].verify_pending:
+            client.verify(1)
+        client.write_read(1)
+        client.save(1)
+        self.sim.directive("!fault 1 nvm-corrupt")
+        time.sleep(0.05)
 
     def crashed_at_end(self):
         self.stats.defect("daran-sim (pid %s) had died by itself at the end: status %s" %

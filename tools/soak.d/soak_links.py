@@ -56,6 +56,17 @@ def same_value(kind, a, b):
     return int(a) == int(b)
 
 
+def shown(value):
+    """@value as its shortest decimal that reads back as the same float32
+    (what the drive prints); integers as they are."""
+    if isinstance(value, float):
+        for digits in range(1, 10):
+            text = "%.*g" % (digits, value)
+            if same_value("f32", float(text), value):
+                return text
+    return repr(value)
+
+
 def text_of(kind, value):
     if kind == "f32":
         return repr(f32(value))
@@ -76,7 +87,7 @@ def xor_of(text):
 class AsciiLink:
     """The ASCII pseudo-terminal, opened by pyserial (reopened after a restart)."""
 
-    REPLY_TIMEOUT = 2.0   # a line is always answered: the bridge gives up after 10 ms
+    REPLY_TIMEOUT = 5.0   # a line is always answered: the bridge gives up after 10 ms
 
     def __init__(self, serial_module, stats, rng):
         self.serial = serial_module
