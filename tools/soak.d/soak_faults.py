@@ -134,7 +134,8 @@ class Orchestrator:
             self.stats.trace("fault: !fault %d can-recover" % node)
         finally:
             self.faults.end(window)
-        self.stats.event("bus faults: %s (node %s)" % (kind, "0 (the bus)" if node == 0 else "N"))
+        self.stats.event("bus faults: %s %s" % (kind, "of the whole bus (node 0)" if node == 0
+                                                 else "of one drive"))
 
     def power_cycle(self):
         drives = (1, 2, 3, 4) if self.rng.random() < 0.15 else (self.rng.randint(1, 4),)
@@ -180,10 +181,13 @@ class Orchestrator:
                     client.verify(drive)
                 name, kind, _ = self.rng.choice(PROPERTIES)
                 new = client.write_read(drive, name, random_value(self.rng, kind))
-                path.save()
+                path.save_unwaited()
             except NoAnswer as err:
                 self.stats.failure("faults", err.cause, False)
-            time.sleep(self.rng.uniform(0.0, 0.004))
+            # the save's line or frame reaches the drive within about a tick
+            # (1 ms) and is written then: 0-3 ms catches it before, during
+            # and after
+            time.sleep(self.rng.uniform(0.0, 0.003))
             self.sim.kill()
             self.stats.trace("fault: kill -9 after a save of drive %d" % drive)
             # the save may have happened: NVM holds the old values or these

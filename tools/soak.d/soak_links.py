@@ -152,6 +152,14 @@ class AsciiLink:
             self.stats.call(client, time.monotonic() - started)
         return error
 
+    def send_only(self, client, text):
+        """A line written and not waited for (the kill -9 that follows
+        must catch the drive busy with it)."""
+        with self.lock:
+            line, _ = self._line(text)
+            self.stats.trace("%s: > %s (not waited for)" % (client, line))
+            self._write(line)
+
     def _write(self, text):
         if self.port is None:
             raise LinkDown("ASCII pty closed")
@@ -227,6 +235,9 @@ class AsciiPath:
 
     def save(self):
         self._command("ss %d" % self.drive)
+
+    def save_unwaited(self):
+        self.link.send_only(self.client, "ss %d" % self.drive)
 
     def move_to(self, target, vel, acc):
         self._command("q %d %s %s %s" % (self.drive, repr(f32(target)), vel, acc))
@@ -365,6 +376,8 @@ class CanPath:
 
     def save(self):
         self.link.command(self.client, self._id(0x08), struct.pack("<IHH", 0x01, 0, 0))
+
+    save_unwaited = save    # a frame is never answered
 
     def move_to(self, target, vel, acc):
         self.link.command(self.client, self._id(0x1A),

@@ -68,6 +68,8 @@ def report(stats, orchestrator, elapsed, args, sim_path, nvm_dir):
     out.append("  daran-sim pids: %s; stderr lines: %d; console output: %.1f MB"
                % (" ".join(str(p) for p in orchestrator.pids), orchestrator.sim.stderr_lines,
                   orchestrator.sim.console_bytes / 1e6))
+    for line in list(orchestrator.sim.stderr_tail)[-5:]:
+        out.append("    stderr: %s" % line)
     if nvm_dir:
         out.append("  NVM folder: %s" % nvm_dir)
     out.append("")
