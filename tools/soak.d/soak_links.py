@@ -95,7 +95,6 @@ class AsciiLink:
         self.rng = rng
         self.port = None
         self.lock = threading.RLock()
-        self.lost_lines = 0
 
     def open(self, path):
         with self.lock:
@@ -175,7 +174,6 @@ class AsciiLink:
         except (OSError, self.serial.SerialException) as err:
             raise LinkDown("ASCII pty: %s" % err)
         if not raw.endswith(b"\n"):
-            self.lost_lines += 1
             self._resync()
             raise NoAnswer("pty: line unanswered")
         reply = raw.decode("ascii", errors="replace").rstrip("\r\n")

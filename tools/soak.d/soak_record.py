@@ -79,15 +79,18 @@ class FaultLog:
     def __init__(self):
         self.lock = threading.Condition()
         self.windows = []
+        self.open_windows = set()
 
     def begin(self, kind, drives):
         with self.lock:
             self.windows.append([time.monotonic(), None, kind, frozenset(drives)])
+            self.open_windows.add(len(self.windows) - 1)
             return len(self.windows) - 1
 
     def end(self, index):
         with self.lock:
             self.windows[index][1] = time.monotonic()
+            self.open_windows.discard(index)
             self.lock.notify_all()
 
     def overlapped(self, start, end, drive):
@@ -95,18 +98,17 @@ class FaultLog:
         [@start, @end] (with FAULT_MARGIN on both sides)."""
         with self.lock:
             for began, ended, _, drives in reversed(self.windows):
-                if drive not in drives:
-                    continue
-                if began - FAULT_MARGIN <= end and (ended is None or ended + FAULT_MARGIN >= start):
-                    return True
                 if ended is not None and ended + 60 < start:
-                    break   # older windows are far in the past
+                    break   # one after the other: the older ones ended even earlier
+                if drive in drives and began - FAULT_MARGIN <= end and (
+                        ended is None or ended + FAULT_MARGIN >= start):
+                    return True
             return False
 
     def active(self, drive):
         with self.lock:
-            return any(ended is None and drive in drives
-                       for _, ended, _, drives in self.windows[-3:])
+            return any(self.windows[i][1] is None and drive in self.windows[i][3]
+                       for i in self.open_windows)
 
     def wait_quiet(self, drive, timeout):
         """Until no fault hits @drive (at most @timeout), then FAULT_MARGIN

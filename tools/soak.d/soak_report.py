@@ -68,6 +68,8 @@ def report(stats, orchestrator, elapsed, args, sim_path, nvm_dir):
     out.append("  daran-sim pids: %s; stderr lines: %d; console output: %.1f MB"
                % (" ".join(str(p) for p in orchestrator.pids), orchestrator.sim.stderr_lines,
                   orchestrator.sim.console_bytes / 1e6))
+    out.append("  CAN frames the CAN client received that were not its answers (the bridge's"
+               " traffic, late replies drained): %d" % orchestrator.can_link.foreign_frames)
     for line in list(orchestrator.sim.stderr_tail)[-5:]:
         out.append("    stderr: %s" % line)
     if nvm_dir:

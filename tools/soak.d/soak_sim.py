@@ -7,7 +7,6 @@ import os
 import signal
 import subprocess
 import threading
-import time
 
 # The topology (docs/reliability.md): drive 1 is the vendor-like ASCII
 # client's and the gateway of the bridge, drives 2 and 3 are reached
@@ -130,11 +129,3 @@ class Sim:
             return None
         return rss, fds
 
-
-def wait_until(predicate, timeout, step=0.01):
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return True
-        time.sleep(step)
-    return predicate()
