@@ -7,7 +7,7 @@ NVM folder, the value being saved must read back old or new). A daran-sim
 that dies by itself is a defect; it is restarted and the run goes on."""
 import time
 
-from soak_clients import random_value
+from soak_clients import Unrecovered, random_value
 from soak_links import PROPERTIES, LinkDown, NoAnswer, same_value
 from soak_sim import SimDied
 
@@ -97,6 +97,8 @@ class Orchestrator:
                     self.reopen()
             except (SimDied, LinkDown) as err:
                 self.stats.failure("faults", "link down: %s" % str(err)[:40], True)
+            except Unrecovered as err:
+                self.stats.defect("faults: %s" % err)
 
     def pause(self, seconds):
         """Sleeps; checks that daran-sim is alive. False when stopping."""

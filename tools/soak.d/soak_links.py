@@ -118,7 +118,6 @@ class AsciiLink:
             return line + "*%d" % xor_of(line), True
         return line, False
 
-
     def query(self, client, text):
         """One query line and its one reply line (checked, without its
         checksum). Timed as a call of @client."""

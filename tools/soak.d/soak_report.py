@@ -32,6 +32,8 @@ def leaks(stats):
 def report(stats, orchestrator, elapsed, args, sim_path, nvm_dir):
     for leak in leaks(stats):
         stats.defect("leak: " + leak)
+    for line in orchestrator.sim.sanitizer_reports[:10]:
+        stats.defect("daran-sim's sanitizers: " + line)
     out = []
     out.append("soak: %.0f s (asked %.0f s, at most %d calls), seed %d, %s"
                % (elapsed, args.duration, min(args.max_calls, 10 ** 9), args.seed, sim_path))

@@ -28,6 +28,7 @@ class Sim:
         self.generation = 0
         self.stderr_tail = collections.deque(maxlen=50)
         self.stderr_lines = 0
+        self.sanitizer_reports = []
         self.console_bytes = 0
         self._stdin_lock = threading.Lock()
 
@@ -65,6 +66,9 @@ class Sim:
                     line = raw.decode(errors="replace").rstrip("\n")
                     self.stderr_lines += 1
                     self.stderr_tail.append(line)
+                    if "runtime error:" in line or "Sanitizer" in line:
+                        # a Debug + ASan/UBSan build (the host preset) says so
+                        self.sanitizer_reports.append("pid %d: %s" % (proc.pid, line))
                     log.write("[pid %d] %s\n" % (proc.pid, line))
                     log.flush()
             except (OSError, ValueError):
