@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # CI step: the soak (tools/soak, docs/reliability.md) in its short form,
 # about 60 s of wall time:
-#   1. 48 s of the three clients against daran-sim --nvm under bus faults,
+#   1. 46 s of the three clients against daran-sim --nvm under bus faults,
 #      power cycles and one kill -9 during a save: must pass;
-#   2. 10 s with three defects made on purpose (a wrong value, a relative
+#   2. 8 s with three defects made on purpose (a wrong value, a relative
 #      move sent twice, a damaged NVM): must fail, naming each of them, so
 #      that the checks of step 1 are known to bite.
 # Uses build/host's daran-sim (built by the host workflow before the ci.d
@@ -25,18 +25,18 @@ seed=${SOAK_SEED:-1}
 log=$(mktemp "${TMPDIR:-/tmp}/daran-soak.XXXXXX")
 trap 'rm -f "$log"' EXIT
 
-echo "60-soak: 48 s, seed $seed"
-if ! tools/soak --duration 48 --seed "$seed" --sim "$sim" >"$log" 2>&1; then
+echo "60-soak: 46 s, seed $seed"
+if ! tools/soak --duration 46 --seed "$seed" --sim "$sim" >"$log" 2>&1; then
   cat "$log"
-  echo "60-soak: FAILED (tools/soak --duration 48 --seed $seed)"
+  echo "60-soak: FAILED (tools/soak --duration 46 --seed $seed)"
   exit 1
 fi
 sed -n '/^client /,/^all /p' "$log"
 grep -E '^(defects|soak):' "$log"
 
-echo "60-soak: 10 s with defects made on purpose: each must be found"
+echo "60-soak: 8 s with defects made on purpose: each must be found"
 status=0
-tools/soak --duration 10 --seed "$seed" --sim "$sim" \
+tools/soak --duration 8 --seed "$seed" --sim "$sim" \
   --inject wrong-value,double-move,nvm-loss >"$log" 2>&1 || status=$?
 missing=()
 grep -q 'DEFECT: ascii: drive 1: w .* then r gave' "$log" || missing+=("the wrong value")
