@@ -145,6 +145,10 @@ class Orchestrator:
         # gateway: no bridged line is on its way while it powers up
         for drive in drives:
             self.drive_locks[drive].acquire()
+        # the gateway's power cycle empties its transmit queue: a bridged
+        # command it accepted just before (its fence answered) may never
+        # reach drive 2 or 3, whose operations go on meanwhile
+        window = self.faults.begin("!power-cycle 1", FAULT_HITS[1]) if 1 in drives else None
         try:
             with self.ascii_link.lock:
                 self.sim.directive("!power-cycle %d" % (0 if len(drives) > 1 else drives[0]))
@@ -153,6 +157,8 @@ class Orchestrator:
             for drive in drives:
                 self.owner(drive).models[drive].power_lost()
         finally:
+            if window is not None:
+                self.faults.end(window)
             for drive in drives:
                 self.drive_locks[drive].release()
         self.stats.event("power cycles (%s)" % ("all drives" if len(drives) > 1 else "one drive"))
