@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ci-beside: 40-fuzz.sh
 # CI step: the soak (tools/soak, docs/reliability.md) in its short form,
 # about 60 s of wall time:
 #   1. 46 s of the three clients against daran-sim --nvm under bus faults,
