@@ -119,8 +119,9 @@ static daran_result_t timed_move(daran_drive_t *drive, float d, float t, float a
     move->vel_rpm = v / DEG_PER_S_PER_RPM;
     move->rate = rate / DEG_PER_S_PER_RPM;
     if (!(move->vel_rpm > 0.0f) || !(move->rate > 0.0f)) {
-        /* a distance so small the plan underflows (a subnormal target): the
-         * drive steps there, nothing given, as for no distance at all */
+        /* a plan that underflows (a subnormal distance; a triangle whose
+         * duration squared overflows): the drive steps there, nothing
+         * given, as for no distance at all */
         move->given = 0;
         move->vel_rpm = 0.0f;
         move->rate = 0.0f;
