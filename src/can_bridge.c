@@ -17,12 +17,18 @@
 
 /* What a finished query prints. */
 enum answer {
-    ANSWER_VALUES,    /* r f g: the values on one line */
-    ANSWER_SERIAL,    /* r serial_number: high * 2^32 + low */
-    ANSWER_IDENTITY,  /* i: fw hw serial */
+    ANSWER_VALUES,    /* r f g i: the values on one line */
     ANSWER_ERRORS,    /* e: seven lines */
     ANSWER_TRAPEZOID  /* q with omitted values: nothing; the move goes out */
 };
+
+/* reads[i].reserved of the low half of the serial number, whose high half
+ * is read next: the two print as one value, high * 2^32 + low (C7). */
+#define READ_SERIAL_LOW 1u
+/* Every query's reads fit (the serial number takes two). */
+DARAN_STATIC_ASSERT(DARAN_QUERY_END_E - DARAN_QUERY_END_I <= DARAN_CAN_BRIDGE_READS &&
+                        DARAN_QUERY_END_I - DARAN_QUERY_END_G + 1 <= DARAN_CAN_BRIDGE_READS,
+                    a_query_fits_the_bridge_reads);
 
 daran_result_t daran_can_bridge_init_checked(daran_can_bridge_t *bridge, daran_can_t *can,
                                              uint32_t build_check)
@@ -73,17 +79,30 @@ static daran_result_t ask_next(daran_can_bridge_t *bridge)
 }
 
 /* Start a query of @p count properties (their CAN addresses in this
- * build's table, C31): `not bridged` when one has none. */
+ * build's table, C31): `not bridged` when one has none. The serial number
+ * has no address of its own: its two halves are read. */
 static daran_result_t ask(daran_can_bridge_t *bridge, uint32_t node, enum answer kind,
                           const daran_prop_t *props, uint8_t count)
 {
+    uint8_t reads = 0;
     for (uint8_t i = 0; i < count; i++) {
-        uint16_t address = daran_can_address_of(props[i]);
-        if (address == 0u) {
-            return DARAN_ERR_NOT_BRIDGED;
+        daran_prop_t prop = props[i];
+        uint8_t halves = 1;
+        if (prop == DARAN_PROP_SERIAL_NUMBER) {
+            prop = DARAN_PROP_SERIAL_NUMBER_L;
+            halves = 2;
         }
-        bridge->reads[i].address = address;
-        bridge->reads[i].type = (uint8_t)daran_can_type_of(props[i]);
+        while (halves-- != 0u) {
+            uint16_t address = daran_can_address_of(prop);
+            if (address == 0u) {
+                return DARAN_ERR_NOT_BRIDGED;
+            }
+            daran_can_bridge_read_t *read = &bridge->reads[reads++];
+            read->address = address;
+            read->type = (uint8_t)daran_can_type_of(prop);
+            read->reserved = halves; /* READ_SERIAL_LOW for the low half */
+            prop = DARAN_PROP_SERIAL_NUMBER_H;
+        }
     }
     bridge->node = (uint8_t)node;
     bridge->kind = (uint8_t)kind;
@@ -91,7 +110,7 @@ static daran_result_t ask(daran_can_bridge_t *bridge, uint32_t node, enum answer
     bridge->wants_checksum = bridge->can->drive->reply_wants_checksum;
     daran_result_t result = ask_next(bridge);
     if (result == DARAN_OK) {
-        bridge->count = count; /* waiting now */
+        bridge->count = reads; /* waiting now */
     }
     return result;
 }
@@ -119,11 +138,6 @@ static daran_prop_type_t reply_value(const daran_can_bridge_read_t *read, daran_
     }
 }
 
-static uint64_t serial_of(const daran_can_bridge_read_t *low, const daran_can_bridge_read_t *high)
-{
-    return (uint64_t)high->bits << 32 | low->bits;
-}
-
 /* The line the remote drive would have printed, or its error. */
 static daran_result_t answer(daran_can_bridge_t *bridge)
 {
@@ -131,8 +145,16 @@ static daran_result_t answer(daran_can_bridge_t *bridge)
     const daran_can_bridge_read_t *reads = bridge->reads;
     daran_value_t values[DARAN_CAN_BRIDGE_READS];
     uint8_t types[DARAN_CAN_BRIDGE_READS];
-    for (uint8_t i = 0; i < bridge->count; i++) {
+    uint8_t printed = bridge->count;
+    for (uint8_t i = 0; i < printed; i++) {
         types[i] = (uint8_t)reply_value(&reads[i], &values[i]);
+    }
+    /* the serial number, last of its list wherever it is asked, prints as
+     * one value: high * 2^32 + low */
+    if (printed >= 2u && reads[printed - 2u].reserved == READ_SERIAL_LOW) {
+        printed--;
+        values[printed - 1u].u64 |= (uint64_t)reads[printed].bits << 32;
+        types[printed - 1u] = DARAN_TYPE_U64;
     }
     switch ((enum answer)bridge->kind) {
     case ANSWER_ERRORS: {
@@ -158,21 +180,11 @@ static daran_result_t answer(daran_can_bridge_t *bridge)
         }
         return send_or_fail(bridge, bridge->node, DARAN_CAN_TRAPEZOID, data);
     }
-    case ANSWER_SERIAL:
-        values[0].u64 = serial_of(&reads[0], &reads[1]);
-        types[0] = DARAN_TYPE_U64;
-        bridge->count = 1;
-        break;
-    case ANSWER_IDENTITY:
-        values[2].u64 = serial_of(&reads[2], &reads[3]);
-        types[2] = DARAN_TYPE_U64;
-        bridge->count = 3;
-        break;
     default:
         break;
     }
     daran_reply_begin(drive);
-    daran_append_values(drive, values, types, bridge->count);
+    daran_append_values(drive, values, types, printed);
     daran_reply_end(drive);
     return DARAN_OK;
 }
@@ -248,17 +260,8 @@ static daran_result_t parse_line(daran_can_bridge_t *bridge, const daran_request
 {
     const daran_command_t *command = request->command;
     daran_result_t result = DARAN_OK;
-    switch (command->word[0]) {
-    case 'r':
-    case 's':
-    case 'u':
-    case 'f':
-    case 'g':
-    case 'i':
-    case 'e':
-    case 'h':
-        return DARAN_OK; /* nothing after the id, or a property checked already */
-    case 'w': {
+    switch (DARAN_CMD_CAN_FORM(command)) {
+    case DARAN_CAN_FORM_WRITE: {
         if (DARAN_PROPERTY_ACCESS(daran_property_row(request->prop)) != DARAN_ACCESS_RW) {
             return DARAN_ERR_READ_ONLY;
         }
@@ -273,20 +276,25 @@ static daran_result_t parse_line(daran_can_bridge_t *bridge, const daran_request
         return result;
     }
 #if DARAN_ENABLE_MULTI_MOTOR
-    case 'm':
-        if (command->word[1] == 's') {
-            return daran_parse_preset(request, bridge->values);
-        }
+    case DARAN_CAN_FORM_PRESET:
+        return daran_parse_preset(request, bridge->values);
+    case DARAN_CAN_FORM_START: {
         bool rel = false; /* parse_start sets it only for a good flag */
         result = daran_parse_start(request, &rel);
         bridge->given = rel ? 1u : 0u;
         return result;
+    }
 #endif
-    default:
+    case DARAN_CAN_FORM_MOTION:
+    case DARAN_CAN_FORM_IMPEDANCE:
         if (command->arg == DARAN_SHAPE_TRAPEZOID && node == 0u && request->fields->count < 5u) {
             return DARAN_ERR_NOT_BRIDGED; /* every drive's own limits cannot be read (C35) */
         }
         return daran_parse_motion(request, bridge->values, &bridge->given);
+    case DARAN_CAN_FORM_NONE:
+        return DARAN_ERR_NOT_BRIDGED; /* nothing is sent for a row without a CAN form */
+    default:
+        return DARAN_OK; /* nothing after the id, or a property checked already */
     }
 }
 
@@ -354,25 +362,19 @@ static daran_result_t send_motion(daran_can_bridge_t *bridge, daran_shape_t shap
 static DARAN_NOINLINE daran_result_t send_line(daran_can_bridge_t *bridge,
                                                const daran_request_t *request, uint32_t node)
 {
-    static const daran_prop_t feedback[] = {DARAN_PROP_POS_ESTIMATE, DARAN_PROP_VEL_ESTIMATE};
-    static const daran_prop_t power[] = {DARAN_PROP_VBUS_VOLTAGE, DARAN_PROP_IQ_MEASURED};
-    static const daran_prop_t identity[] = {DARAN_PROP_FW_VERSION, DARAN_PROP_HW_VERSION,
-                                            DARAN_PROP_SERIAL_NUMBER_L,
-                                            DARAN_PROP_SERIAL_NUMBER_H};
-    static const daran_prop_t errors[] = {
-        DARAN_PROP_AXIS_ERROR,       DARAN_PROP_MOTOR_ERROR,          DARAN_PROP_ENCODER_ERROR,
-        DARAN_PROP_CONTROLLER_ERROR, DARAN_PROP_FET_THERMISTOR_ERROR, DARAN_PROP_MOTOR_THERMISTOR_ERROR,
-        DARAN_PROP_CAN_ERROR};
     const daran_command_t *command = request->command;
     daran_prop_t prop = request->prop;
     uint8_t data[8] = {0};
-    switch (command->word[0]) {
-    case 'r':
-        if (prop == DARAN_PROP_SERIAL_NUMBER) {
-            return ask(bridge, node, ANSWER_SERIAL, identity + 2, 2);
-        }
+    switch (DARAN_CMD_CAN_FORM(command)) {
+    case DARAN_CAN_FORM_READ:
         return ask(bridge, node, ANSWER_VALUES, &request->prop, 1);
-    case 'w':
+    case DARAN_CAN_FORM_READ_LIST: {
+        uint8_t count;
+        const daran_prop_t *props = daran_query_of(command, &count);
+        return ask(bridge, node, command->arg == DARAN_QUERY_LIST_E ? ANSWER_ERRORS : ANSWER_VALUES,
+                   props, count);
+    }
+    case DARAN_CAN_FORM_WRITE:
         if (node == 0u && prop == DARAN_PROP_CAN_NODE_ID) {
             return DARAN_OK; /* "the drive on this link" only, never every drive's id (C34) */
         }
@@ -380,37 +382,32 @@ static DARAN_NOINLINE daran_result_t send_line(daran_can_bridge_t *bridge,
         daran_can_put_u16(data + 2, daran_can_type_of(prop));
         daran_can_put_u32(data + 4, bridge->reads[0].bits);
         return send_or_fail(bridge, node, DARAN_CAN_WRITE, data);
-    case 'm':
-        if (command->word[1] == 's') {
-            daran_can_put_f32(data, bridge->values[0]);
-            /* a mode in p3 goes x 100, as the vendor's libraries send it (C40) */
-            daran_result_t result = put_scaled_pair(data, bridge->values[1], bridge->values[2]);
-            return result == DARAN_OK ? send_or_fail(bridge, node, DARAN_CAN_PRESET, data) : result;
-        }
+    case DARAN_CAN_FORM_PRESET: {
+        daran_can_put_f32(data, bridge->values[0]);
+        /* a mode in p3 goes x 100, as the vendor's libraries send it (C40) */
+        daran_result_t result = put_scaled_pair(data, bridge->values[1], bridge->values[2]);
+        return result == DARAN_OK ? send_or_fail(bridge, node, DARAN_CAN_PRESET, data) : result;
+    }
+    case DARAN_CAN_FORM_START:
         data[0] = (uint8_t)(DARAN_CAN_SUB_START_TRACK + command->arg);
         data[4] = bridge->given; /* the relative flag (C2) */
         return send_or_fail(bridge, node, DARAN_CAN_SYSTEM, data);
-    case 's':
-    case 'u':
-        /* ss..st are the HAL actions 0..5 and sub-codes 1..6; u feeds (C36) */
-        data[0] = command->word[0] == 'u' ? DARAN_CAN_SUB_FEED : (uint8_t)(command->arg + 1u);
+    case DARAN_CAN_FORM_ACTION:
+        /* the HAL actions 0..5 are the sub-codes 1..6; the feed has its own (C36) */
+        data[0] = command->arg == DARAN_ACTION_FEED_WATCHDOG ? DARAN_CAN_SUB_FEED
+                                                             : (uint8_t)(command->arg + 1u);
         return send_or_fail(bridge, node, DARAN_CAN_SYSTEM, data);
-    case 'f':
-        return ask(bridge, node, ANSWER_VALUES, feedback, 2);
-    case 'g':
-        return ask(bridge, node, ANSWER_VALUES, power, 2);
-    case 'i':
-        return ask(bridge, node, ANSWER_IDENTITY, identity, 4);
-    case 'e':
-        return ask(bridge, node, ANSWER_ERRORS, errors, DARAN_ERROR_REGISTERS);
-    case 'h':
+    case DARAN_CAN_FORM_LOCAL:
 #if DARAN_ENABLE_HELP
         return daran_help(bridge->can->drive, request, true); /* no traffic (C35) */
 #else
         return DARAN_ERR_NOT_BRIDGED;
 #endif
-    default:
+    case DARAN_CAN_FORM_MOTION:
+    case DARAN_CAN_FORM_IMPEDANCE:
         return send_motion(bridge, (daran_shape_t)command->arg, node);
+    default:
+        return DARAN_ERR_NOT_BRIDGED;
     }
 }
 

@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include "daran_drive.h"
+#include "daran_protocol.h"
 #include "line.h"
 
 struct daran_command;
@@ -30,8 +31,44 @@ static inline daran_field_t daran_field_at(const daran_request_t *request, unsig
 /* Command flags. */
 #define DARAN_CMD_READ 0x01u /* answered for id 0 and never forwarded */
 #define DARAN_CMD_PATH 0x02u /* the id comes from a property path (r, w) */
+/* Bits 2..5: the row's CAN form (daran_protocol.h's CAN column), which the
+ * bridge sends for a line addressed to a drive behind it. */
+#define DARAN_CMD_CAN_SHIFT 2u
+typedef enum daran_can_form {
+    DARAN_CAN_FORM_NONE, /* no CAN form: `not bridged` for another drive */
+    DARAN_CAN_FORM_MOTION,
+    DARAN_CAN_FORM_IMPEDANCE,
+    DARAN_CAN_FORM_PRESET,
+    DARAN_CAN_FORM_START,
+    DARAN_CAN_FORM_READ,
+    DARAN_CAN_FORM_WRITE,
+    DARAN_CAN_FORM_ACTION,
+    DARAN_CAN_FORM_READ_LIST,
+    DARAN_CAN_FORM_LOCAL
+} daran_can_form_t;
+#define DARAN_CMD_CAN_FORM(command) ((daran_can_form_t)((command)->flags >> DARAN_CMD_CAN_SHIFT))
 
-/* 5 bytes a row; the row's handler is in a parallel table made from the
+/* The properties query rows answer (daran_protocol.h's DARAN_QUERY_*), one
+ * list after another (commands_query.c). A query row's arg is where its
+ * list starts << 3 | its length. */
+extern const daran_prop_t daran_query_props[];
+#define DARAN_QUERY_ONE_(name) +1
+enum daran_query_ends {
+    DARAN_QUERY_END_F = 0 DARAN_QUERY_F(DARAN_QUERY_ONE_),
+    DARAN_QUERY_END_G = DARAN_QUERY_END_F DARAN_QUERY_G(DARAN_QUERY_ONE_),
+    DARAN_QUERY_END_I = DARAN_QUERY_END_G DARAN_QUERY_I(DARAN_QUERY_ONE_),
+    DARAN_QUERY_END_E = DARAN_QUERY_END_I DARAN_QUERY_E(DARAN_QUERY_ONE_)
+};
+#undef DARAN_QUERY_ONE_
+#define DARAN_QUERY_ARG_(start, end) ((start) << 3 | ((end) - (start)))
+#define DARAN_QUERY_LIST_F DARAN_QUERY_ARG_(0, DARAN_QUERY_END_F)
+#define DARAN_QUERY_LIST_G DARAN_QUERY_ARG_(DARAN_QUERY_END_F, DARAN_QUERY_END_G)
+#define DARAN_QUERY_LIST_I DARAN_QUERY_ARG_(DARAN_QUERY_END_G, DARAN_QUERY_END_I)
+#define DARAN_QUERY_LIST_E DARAN_QUERY_ARG_(DARAN_QUERY_END_I, DARAN_QUERY_END_E)
+#define DARAN_QUERY_LIST_NONE 0
+
+
+/* 4 bytes a row; the row's handler is in a parallel table made from the
  * same list (command_table.c), so a row stays small. */
 typedef struct daran_command {
     char word[2];   /* lower case; word[1] is 0 for one-letter words */
@@ -39,6 +76,13 @@ typedef struct daran_command {
     uint8_t flags;
     uint8_t arg; /* handler-specific: the shape of a motion command, the HAL action of a system one */
 } daran_command_t;
+
+/* A query row's properties and their count. */
+static inline const daran_prop_t *daran_query_of(const daran_command_t *command, uint8_t *count)
+{
+    *count = command->arg & 7u;
+    return daran_query_props + (command->arg >> 3);
+}
 
 #define DARAN_MIN_FIELDS(command) ((command)->fields >> 4)
 #define DARAN_MAX_FIELDS(command) ((command)->fields & 0x0Fu)

@@ -1,6 +1,6 @@
-/* The command table: the only place that knows which commands exist, their
- * field counts, handlers and help text. One list, DARAN_COMMANDS, makes both
- * the rows and the `h` text, so they cannot drift apart. */
+/* The drive's command table: its rows, word lookup, handlers and `h` text,
+ * all made from the protocol's one list (daran_protocol.h), so the drive,
+ * the bridge and the client cannot drift apart. */
 #include "command.h"
 #include "compiler.h"
 #include "handlers.h"
@@ -9,89 +9,102 @@
 
 #include "daran_port.h"
 
-#define READ DARAN_CMD_READ
-#define PATH DARAN_CMD_PATH
-#define READ_PATH (DARAN_CMD_READ | DARAN_CMD_PATH)
-
-/* X(name, the word's letters (the second 0 for a one-letter word), min
- * fields, max fields, flags, arg, handler, arguments for `h` after the id:
- * every command but r and w takes the motor id first, and `h` prints it).
- * The order is `h`'s. */
-#define SINGLE_MOTION_COMMANDS(X)                                                               \
-    X(T, 't', 0, 3, 5, 0, DARAN_SHAPE_FILTERED, daran_cmd_motion, "pos [vel] [bw]")                \
-    X(Q, 'q', 0, 3, 5, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_motion, "pos [vel] [acc]")              \
-    X(P, 'p', 0, 3, 5, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_motion, "pos [vel_ff] [torque_ff]")   \
-    X(V, 'v', 0, 3, 5, 0, DARAN_SHAPE_VELOCITY, daran_cmd_motion, "vel [param] [mode]")            \
-    X(C, 'c', 0, 3, 5, 0, DARAN_SHAPE_TORQUE, daran_cmd_motion, "torque [param] [mode]")           \
-    X(D, 'd', 0, 7, 7, 0, DARAN_SHAPE_IMPEDANCE, daran_cmd_motion, "pdes vdes tff kp kd")
-
+/* Which rows of the protocol (daran_protocol.h) this build's drive has: the
+ * row's FEATURE column against the options. The DISCOVERY form of `h` is
+ * not a row of its own here: the `h` row takes its fields (below). */
+#define ON_DRIVE_ALWAYS(...) __VA_ARGS__
 #if DARAN_ENABLE_MULTI_MOTOR
-#define PRESET_FIELDS (2 + DARAN_PRESET_VALUES) /* ms id p1 p2 p3 */
-#define MULTI_MOTION_COMMANDS(X)                                                                \
-    X(MS, 'm', 's', PRESET_FIELDS, PRESET_FIELDS, 0, 0, daran_cmd_ms, "p1 p2 p3")                  \
-    X(MT, 'm', 't', 3, 3, 0, DARAN_SHAPE_FILTERED, daran_cmd_start, "rel")                         \
-    X(MQ, 'm', 'q', 3, 3, 0, DARAN_SHAPE_TRAPEZOID, daran_cmd_start, "rel")                        \
-    X(MP, 'm', 'p', 3, 3, 0, DARAN_SHAPE_PASSTHROUGH, daran_cmd_start, "rel")                      \
-    X(MV, 'm', 'v', 2, 2, 0, DARAN_SHAPE_VELOCITY, daran_cmd_start, "")                            \
-    X(MC, 'm', 'c', 2, 2, 0, DARAN_SHAPE_TORQUE, daran_cmd_start, "")
+#define ON_DRIVE_MULTI(...) __VA_ARGS__
 #else
-#define MULTI_MOTION_COMMANDS(X)
+#define ON_DRIVE_MULTI(...)
 #endif
-
-#define PROPERTY_AND_SYSTEM_COMMANDS(X)                                      \
-    X(R, 'r', 0, 2, 3, READ_PATH, 0, daran_cmd_r, "path [id]")                                     \
-    X(W, 'w', 0, 3, 4, PATH, 0, daran_cmd_w, "path value [id]")                                    \
-    X(SS, 's', 's', 2, 2, 0, DARAN_ACTION_SAVE_CONFIG, daran_cmd_action, "")                       \
-    X(SE, 's', 'e', 2, 2, 0, DARAN_ACTION_ERASE_CONFIG, daran_cmd_action, "")                      \
-    X(SR, 's', 'r', 2, 2, 0, DARAN_ACTION_REBOOT, daran_cmd_action, "")                            \
-    X(SC, 's', 'c', 2, 2, 0, DARAN_ACTION_CLEAR_ERRORS, daran_cmd_action, "")                      \
-    X(SZ, 's', 'z', 2, 2, 0, DARAN_ACTION_SET_ZERO, daran_cmd_action, "")                          \
-    X(ST, 's', 't', 2, 2, 0, DARAN_ACTION_ESTOP, daran_cmd_action, "")
-
-#if DARAN_ENABLE_DISCOVERY
-#define HELP_COMMAND(X) X(H, 'h', 0, 2, 4, READ, 0, help_command, "[properties [prefix]]")
-#elif DARAN_ENABLE_HELP
-#define HELP_COMMAND(X) X(H, 'h', 0, 2, 2, READ, 0, help_command, "")
+#if DARAN_ENABLE_HELP
+#define ON_DRIVE_HELP(...) __VA_ARGS__
 #else
-#define HELP_COMMAND(X)
+#define ON_DRIVE_HELP(...)
 #endif
+#define ON_DRIVE_DISCOVERY(...)
 
-#define QUERY_COMMANDS(X)                                                                       \
-    X(F, 'f', 0, 2, 2, READ, 0, daran_cmd_feedback, "")                                            \
-    X(G, 'g', 0, 2, 2, READ, 0, daran_cmd_power, "")                                               \
-    X(I, 'i', 0, 2, 2, READ, 0, daran_cmd_identity, "")                                            \
-    X(E, 'e', 0, 2, 2, READ, 0, daran_cmd_errors, "")                                              \
-    X(U, 'u', 0, 2, 2, 0, DARAN_ACTION_FEED_WATCHDOG, daran_cmd_action, "")
+/* The most fields of `h id properties [prefix]`, word included. */
+#define DISCOVERY_MAX_OF(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, \
+                         f2, f3, f4, f5, f6)                                                    \
+    DISCOVERY_MAX_##feature(DARAN_PROTOCOL_MAX_FIELDS(f1, f2, f3, f4, f5, f6))
+#define DISCOVERY_MAX_ALWAYS(n)
+#define DISCOVERY_MAX_MULTI(n)
+#define DISCOVERY_MAX_HELP(n)
+#define DISCOVERY_MAX_DISCOVERY(n) +1 + (n)
+enum { DISCOVERY_FIELDS = 0 DARAN_PROTOCOL_COMMANDS(DISCOVERY_MAX_OF) };
+#undef DISCOVERY_MAX_OF
 
-#define DARAN_COMMANDS(X)                                                  \
-    SINGLE_MOTION_COMMANDS(X) MULTI_MOTION_COMMANDS(X)                     \
-    PROPERTY_AND_SYSTEM_COMMANDS(X) HELP_COMMAND(X) QUERY_COMMANDS(X)
+/* A row's field counts, word included; `h` with discovery takes its
+ * properties form's too. */
+#define MIN_FIELDS_OF(f1, f2, f3, f4, f5, f6) (1 + DARAN_PROTOCOL_MIN_FIELDS(f1, f2, f3, f4, f5, f6))
+#define MAX_FIELDS_OF(feature, f1, f2, f3, f4, f5, f6)                      \
+    (DARAN_ENABLE_DISCOVERY && DRIVE_IS_HELP_##feature ? DISCOVERY_FIELDS \
+                                                      : 1 + DARAN_PROTOCOL_MAX_FIELDS(f1, f2, f3, f4, f5, f6))
+#define DRIVE_IS_HELP_ALWAYS 0
+#define DRIVE_IS_HELP_MULTI 0
+#define DRIVE_IS_HELP_HELP 1
+#define DRIVE_IS_HELP_DISCOVERY 0
+
+/* The handler's argument of a row: its shape, its action or its query. */
+#define ARG_MOTION(arg) DARAN_SHAPE_##arg
+#define ARG_START(arg) DARAN_SHAPE_##arg
+#define ARG_SYSTEM(arg) DARAN_ACTION_##arg
+#define ARG_QUERY(arg) DARAN_QUERY_LIST_##arg
+#define ARG_PRESET(arg) 0
+#define ARG_READ(arg) 0
+#define ARG_WRITE(arg) 0
+
+/* The flags of a row: answered for id 0 (a query or a read), the id in a
+ * path, and its CAN form for the bridge. */
+#define READS_MOTION 0u
+#define READS_START 0u
+#define READS_PRESET 0u
+#define READS_SYSTEM 0u
+#define READS_WRITE 0u
+#define READS_QUERY DARAN_CMD_READ
+#define READS_READ DARAN_CMD_READ
+#define FLAGS_OF(cls, can, f1)                                                                \
+    (uint8_t)(READS_##cls | (DARAN_PROTOCOL_PATH_FIRST(f1) ? DARAN_CMD_PATH : 0u) |          \
+              (unsigned)DARAN_CAN_FORM_##can << DARAN_CMD_CAN_SHIFT)
+
+#define DRIVE_COMMANDS(X) DARAN_PROTOCOL_COMMANDS(X)
 
 /* What the dispatcher and the handlers take for granted, checked by the
  * compiler: every command has its id and fits the field views with room to
  * tell "too many" (the count saturates at DARAN_FIELDS_MAX); a motion
- * command's values fit the handler's array and its shape; `w` has a value
- * field; discovery's `h id properties prefix` fits. */
-#define FIELDS_WRONG(name, c0, c1, min, max, flags, arg, handler, help) \
-    | ((min) >= 2 && (min) <= (max) && (max) < DARAN_FIELDS_MAX ? 0 : 1)
-DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(FIELDS_WRONG)) == 0, command_field_counts_fit_the_fields);
+ * command's values fit the handler's array; `w` has a value field; `ms`
+ * carries the preset's values. */
+#define FIELDS_WRONG(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, \
+                     f3, f4, f5, f6)                                                            \
+    ON_DRIVE_##feature(| (MIN_FIELDS_OF(f1, f2, f3, f4, f5, f6) >= 2 &&                         \
+                                  MAX_FIELDS_OF(feature, f1, f2, f3, f4, f5, f6) < DARAN_FIELDS_MAX \
+                              ? 0                                                               \
+                              : 1))
+DARAN_STATIC_ASSERT((0 DRIVE_COMMANDS(FIELDS_WRONG)) == 0, command_field_counts_fit_the_fields);
 #undef FIELDS_WRONG
-#define MOTION_VALUES_WRONG(name, c0, c1, min, max, flags, arg, handler, help) \
-    | ((max) - 2 <= (int)DARAN_MOTION_VALUES_MAX ? 0 : 1)
-DARAN_STATIC_ASSERT((0 SINGLE_MOTION_COMMANDS(MOTION_VALUES_WRONG)) == 0,
-                    motion_values_fit_the_handler);
+#define MOTION_VALUES_WRONG_MOTION(n) | ((n) <= (int)DARAN_MOTION_VALUES_MAX ? 0 : 1)
+#define MOTION_VALUES_WRONG_PRESET(n) | ((n) == (int)DARAN_PRESET_VALUES ? 0 : 1)
+#define MOTION_VALUES_WRONG_START(n)
+#define MOTION_VALUES_WRONG_QUERY(n)
+#define MOTION_VALUES_WRONG_READ(n)
+#define MOTION_VALUES_WRONG_WRITE(n)
+#define MOTION_VALUES_WRONG_SYSTEM(n)
+#define MOTION_VALUES_WRONG(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, \
+                            f2, f3, f4, f5, f6)                                                    \
+    MOTION_VALUES_WRONG_##cls(DARAN_PROTOCOL_MAX_VALUES(f1, f2, f3, f4, f5, f6))
+DARAN_STATIC_ASSERT((0 DRIVE_COMMANDS(MOTION_VALUES_WRONG)) == 0, motion_values_fit_the_handler);
 #undef MOTION_VALUES_WRONG
-#define W_WRONG(name, c0, c1, min, max, flags, arg, handler, help) \
-    | ((flags) == PATH && (min) < 3 ? 1 : 0)
-DARAN_STATIC_ASSERT((0 DARAN_COMMANDS(W_WRONG)) == 0, w_has_a_value);
-#undef W_WRONG
-#define H_WRONG(name, c0, c1, min, max, flags, arg, handler, help) | ((max) > 4 ? 1 : 0)
-DARAN_STATIC_ASSERT((0 HELP_COMMAND(H_WRONG)) == 0, h_has_at_most_a_prefix);
-#undef H_WRONG
 
-#define COMMAND_ROW(name, c0, c1, min, max, flags, arg, handler, help) \
-    {{c0, c1}, (uint8_t)((min) << 4 | (max)), flags, (uint8_t)(arg)},
-static const daran_command_t commands[] = {DARAN_COMMANDS(COMMAND_ROW)};
+#define COMMAND_ROW(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, \
+                    f3, f4, f5, f6)                                                             \
+    ON_DRIVE_##feature({{c0, c1},                                                               \
+                        (uint8_t)(MIN_FIELDS_OF(f1, f2, f3, f4, f5, f6) << 4 |                  \
+                                  MAX_FIELDS_OF(feature, f1, f2, f3, f4, f5, f6)),             \
+                        FLAGS_OF(cls, can, f1),                                                 \
+                        (uint8_t)(ARG_##cls(arg))}, )
+static const daran_command_t commands[] = {DRIVE_COMMANDS(COMMAND_ROW)};
 #undef COMMAND_ROW
 
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
@@ -101,18 +114,30 @@ static const daran_command_t commands[] = {DARAN_COMMANDS(COMMAND_ROW)};
  * words share a slot: a second initializer of one is an error
  * (-Woverride-init, part of -Wextra, under -Werror). */
 #define WORD_SLOT(c0, c1) (((unsigned)(c0) ^ (unsigned)(c1)) & 63u)
-#define ROW_NUMBER(name, c0, c1, min, max, flags, arg, handler, help) ROW_##name,
-enum command_row { DARAN_COMMANDS(ROW_NUMBER) ROW_COUNT };
+#define ROW_NUMBER(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, f3, \
+                   f4, f5, f6)                                                                 \
+    ON_DRIVE_##feature(ROW_##name, )
+enum command_row { DRIVE_COMMANDS(ROW_NUMBER) ROW_COUNT };
 #undef ROW_NUMBER
-#define SLOT_OF(name, c0, c1, min, max, flags, arg, handler, help) \
-    [WORD_SLOT(c0, c1)] = (uint8_t)(ROW_##name + 1),
-static const uint8_t row_of_slot[64] = {DARAN_COMMANDS(SLOT_OF)};
+#define SLOT_OF(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, f3, f4, \
+                f5, f6)                                                                         \
+    ON_DRIVE_##feature([WORD_SLOT(c0, c1)] = (uint8_t)(ROW_##name + 1), )
+static const uint8_t row_of_slot[64] = {DRIVE_COMMANDS(SLOT_OF)};
 #undef SLOT_OF
 
 #if DARAN_ENABLE_HELP
 /* Every command's help arguments after the id, each ending in '\0', in table order. */
-#define HELP_LINE(name, c0, c1, min, max, flags, arg, handler, help) help "\0"
-static const char help_text[] = DARAN_COMMANDS(HELP_LINE);
+#define HELP_LINE(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, f3, \
+                  f4, f5, f6)                                                                 \
+    ON_DRIVE_##feature(HELP_TEXT_##feature(help) "\0")
+#define HELP_TEXT_ALWAYS(help) help
+#define HELP_TEXT_MULTI(help) help
+#if DARAN_ENABLE_DISCOVERY
+#define HELP_TEXT_HELP(help) "[" DARAN_H_PROPERTIES_HELP "]"
+#else
+#define HELP_TEXT_HELP(help) help
+#endif
+static const char help_text[] = DRIVE_COMMANDS(HELP_LINE);
 #undef HELP_LINE
 
 /* `h id`: a line per command, the core's then the port's; `h id properties
@@ -133,7 +158,7 @@ static void help_line(daran_drive_t *drive, const char *word, size_t len, bool i
     daran_reply_end(drive);
 }
 
-static daran_result_t help_command(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_cmd_help(daran_drive_t *drive, const daran_request_t *request)
 {
     return daran_help(drive, request, false);
 }
@@ -169,8 +194,10 @@ daran_result_t daran_help(daran_drive_t *drive, const daran_request_t *request, 
 /* Row i's handler, from the same list: a row names its handler, and a row
  * stays 5 bytes (a pointer in it would pad it to 12). */
 typedef daran_result_t (*handler_fn)(daran_drive_t *drive, const daran_request_t *request);
-#define HANDLER_OF(name, c0, c1, min, max, flags, arg, handler, help) handler,
-static handler_fn const command_handlers[] = {DARAN_COMMANDS(HANDLER_OF)};
+#define HANDLER_OF(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, f3, \
+                   f4, f5, f6)                                                                 \
+    ON_DRIVE_##feature(daran_cmd_##handler, )
+static handler_fn const command_handlers[] = {DRIVE_COMMANDS(HANDLER_OF)};
 #undef HANDLER_OF
 
 const daran_command_t *daran_find_command(const daran_field_t *word)

@@ -62,37 +62,26 @@ daran_result_t daran_reply_properties(daran_drive_t *drive, const daran_prop_t *
     return result;
 }
 
-daran_result_t daran_cmd_feedback(daran_drive_t *drive, const daran_request_t *request)
-{
-    static const daran_prop_t props[] = {DARAN_PROP_POS_ESTIMATE, DARAN_PROP_VEL_ESTIMATE};
-    (void)request;
-    return daran_reply_properties(drive, props, 2);
-}
+#define QUERY_PROP(name) DARAN_PROP_##name,
+const daran_prop_t daran_query_props[] = {DARAN_QUERY_F(QUERY_PROP) DARAN_QUERY_G(QUERY_PROP)
+                                              DARAN_QUERY_I(QUERY_PROP) DARAN_QUERY_E(QUERY_PROP)};
+#undef QUERY_PROP
+DARAN_STATIC_ASSERT(DARAN_QUERY_END_E - DARAN_QUERY_END_I == DARAN_ERROR_REGISTERS,
+                    e_has_seven_lines);
+DARAN_STATIC_ASSERT(DARAN_QUERY_END_I - DARAN_QUERY_END_F <= DARAN_APPEND_MAX, a_query_line_fits);
+DARAN_STATIC_ASSERT(DARAN_QUERY_END_E < 32 && DARAN_ERROR_REGISTERS < 8, a_query_arg_fits_a_byte);
 
-daran_result_t daran_cmd_power(daran_drive_t *drive, const daran_request_t *request)
+daran_result_t daran_cmd_query(daran_drive_t *drive, const daran_request_t *request)
 {
-    static const daran_prop_t props[] = {DARAN_PROP_VBUS_VOLTAGE, DARAN_PROP_IQ_MEASURED};
-    (void)request;
-    return daran_reply_properties(drive, props, 2);
-}
-
-daran_result_t daran_cmd_identity(daran_drive_t *drive, const daran_request_t *request)
-{
-    static const daran_prop_t props[] = {DARAN_PROP_FW_VERSION, DARAN_PROP_HW_VERSION,
-                                         DARAN_PROP_SERIAL_NUMBER};
-    (void)request;
-    return daran_reply_properties(drive, props, 3);
+    uint8_t count;
+    const daran_prop_t *props = daran_query_of(request->command, &count);
+    return daran_reply_properties(drive, props, count);
 }
 
 /* The error registers `e` answers, in the order and with the names the
  * vendor's error decoder expects: "name: value", one line each. */
-static const daran_prop_t error_registers[] = {
-    DARAN_PROP_AXIS_ERROR,           DARAN_PROP_MOTOR_ERROR,          DARAN_PROP_ENCODER_ERROR,
-    DARAN_PROP_CONTROLLER_ERROR,     DARAN_PROP_FET_THERMISTOR_ERROR, DARAN_PROP_MOTOR_THERMISTOR_ERROR,
-    DARAN_PROP_CAN_ERROR,
-};
-#define ERROR_REGISTER_COUNT (sizeof error_registers / sizeof error_registers[0])
-DARAN_STATIC_ASSERT(ERROR_REGISTER_COUNT == DARAN_ERROR_REGISTERS, e_has_seven_lines);
+#define error_registers (daran_query_props + DARAN_QUERY_END_I)
+#define ERROR_REGISTER_COUNT DARAN_ERROR_REGISTERS
 
 /* The bit of axis0.error that summarises each register after the first
  * (daran_hal.h): DARAN_FLAG_MOTOR_FAILED, _ENCODER_FAILED,

@@ -36,15 +36,10 @@ static bool reply_starts_with(const daran_drive_t *drive, const daran_field_t *p
     return true;
 }
 
-daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *request)
-{
-    return daran_discovery(drive, request, false);
-}
-
 daran_result_t daran_discovery(daran_drive_t *drive, const daran_request_t *request,
                                bool on_can_only)
 {
-    static const char properties[] = "properties";
+    static const char properties[] = DARAN_H_PROPERTIES_WORD;
     daran_field_t what = daran_field_at(request, 2);
     if (what.len != sizeof properties - 1u) {
         return DARAN_ERR_INVALID_VALUE;

@@ -137,11 +137,8 @@ daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request)
 daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_action(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_help(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_feedback(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_power(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_identity(daran_drive_t *drive, const daran_request_t *request);
+daran_result_t daran_cmd_query(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *request);
-daran_result_t daran_cmd_discovery(daran_drive_t *drive, const daran_request_t *request);
 /* `h` and discovery as the bridge answers them for another id (C35): the
  * core's commands without the port's, the properties with a CAN address. */
 daran_result_t daran_help(daran_drive_t *drive, const daran_request_t *request, bool bridged);
