@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ci-weight: 25
 # CI step: the benchmark guards (CTest label `bench`) in the `release` build
 # (gcc -O2, no sanitizers); only their driver is built, since every other
 # suite ran in the `host` workflow and the -O2 build of every target is

@@ -1,4 +1,5 @@
 #!/bin/sh
+# ci-weight: 35
 # CI step: the Cortex-M4 build (arm-none-eabi-gcc -Os), the example firmware
 # and its tests under QEMU mps2-an386: the Unity unit suites of tests/unit and
 # tests/number as firmware images (target_unit_*, target_number_*),

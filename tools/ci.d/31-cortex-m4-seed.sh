@@ -1,4 +1,5 @@
 #!/bin/sh
+# ci-weight: 15
 # CI step: the seed-only build on the Cortex-M4 (arm-none-eabi-gcc -Os): the
 # `cortex-m4-seed` preset, the core built with tests/config/seed_options.h
 # (the seed document's protocol: 57 property rows, no discovery, telemetry,

@@ -1,4 +1,5 @@
 #!/bin/sh
+# ci-weight: 150
 # CI step: the core's Unity unit suites (tests/unit, tests/number and the
 # number sample) as firmware images on four more Cortex-M CPUs under QEMU,
 # with the core's flash and the instructions of `t 1 10 0 25 *83` on each:

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ci-weight: 15
 # A 16-bit-int machine: the core built with avr-gcc (ATmega1284P, -Os, the
 # core's warning set as errors) runs tests/portability/portable_check.c under
 # simavr, and its output must equal the same program's on the host: numbers

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ci-weight: 15
 # ci-after: 30-cortex-m4.sh
 # CI step: recorded sessions played by tools/replay into the example firmware
 # under QEMU must give daran-sim's reference replies (tests/sim/replay/) byte

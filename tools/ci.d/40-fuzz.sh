@@ -1,4 +1,5 @@
 #!/bin/sh
+# ci-weight: 270
 # CI step: build the libFuzzer harnesses (the `fuzz` preset: clang-14, ASan +
 # UBSan) and fuzz each for a fixed time from the stored corpus. Any crash,
 # sanitizer report, invariant violation, leak or timeout fails the step.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ci-weight: 165
 # Packaging and configuration suite (issue 8), run by tools/test:
 #   1. the API reference builds with no doxygen warning;
 #   2. `cmake --install` of a release build, then three consumers build and run

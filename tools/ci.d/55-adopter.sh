@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ci-weight: 80
 # CI step: a drive maker's project out of the tree (examples/adopter, the
 # ACME X1) built the way docs/testing-your-drive.md says, from what the
 # package installs and from the source tree:
