@@ -10,16 +10,35 @@
 #include "text.h"
 
 typedef struct command_row {
-    const char *word;
+    char word[3];
     uint8_t min_values;
     uint8_t max_values;
+    uint8_t may_retry;
     daran_client_reply_shape_t shape;
     daran_client_class_t cls;
 } command_row_t;
 
-#define ROW_(name, word, min, max, reply, cls) \
-    {word, min, max, DARAN_CLIENT_REPLY_##reply, DARAN_CLIENT_CLASS_##cls},
-static const command_row_t commands[DARAN_CLIENT_CMD_COUNT] = {DARAN_CLIENT_COMMAND_LIST(ROW_)};
+/* The protocol's classes as the client's retry rule sees them: a start
+ * moves, `r` reads. */
+#define CLIENT_CLASS_MOTION DARAN_CLIENT_CLASS_MOTION
+#define CLIENT_CLASS_START DARAN_CLIENT_CLASS_MOTION
+#define CLIENT_CLASS_PRESET DARAN_CLIENT_CLASS_PRESET
+#define CLIENT_CLASS_QUERY DARAN_CLIENT_CLASS_QUERY
+#define CLIENT_CLASS_READ DARAN_CLIENT_CLASS_QUERY
+#define CLIENT_CLASS_WRITE DARAN_CLIENT_CLASS_WRITE
+#define CLIENT_CLASS_SYSTEM DARAN_CLIENT_CLASS_SYSTEM
+#define CLIENT_RETRY_RETRY 1u
+#define CLIENT_RETRY_ONCE 0u
+
+#define ROW_(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, f3, f4, \
+             f5, f6)                                                                             \
+    {{c0, c1, 0},                                                                                \
+     DARAN_PROTOCOL_MIN_VALUES(f1, f2, f3, f4, f5, f6),                                          \
+     DARAN_PROTOCOL_MAX_VALUES(f1, f2, f3, f4, f5, f6),                                          \
+     CLIENT_RETRY_##retry,                                                                       \
+     DARAN_CLIENT_REPLY_##reply,                                                                 \
+     CLIENT_CLASS_##cls},
+static const command_row_t commands[DARAN_CLIENT_CMD_COUNT] = {DARAN_PROTOCOL_COMMANDS(ROW_)};
 #undef ROW_
 
 static const command_row_t *row_of(daran_client_command_t command)
@@ -47,7 +66,8 @@ daran_client_class_t daran_client_command_class(daran_client_command_t command)
 
 bool daran_client_may_retry(daran_client_command_t command)
 {
-    return daran_client_command_class(command) == DARAN_CLIENT_CLASS_QUERY;
+    const command_row_t *row = row_of(command);
+    return row != NULL && row->may_retry != 0u;
 }
 
 /* The field after position *at in text[0..len): its start and length, *at
@@ -98,7 +118,7 @@ daran_client_reply_shape_t daran_client_line_shape(const char *payload, size_t l
         size_t field_len;
         if (c == (unsigned)DARAN_CLIENT_CMD_H && next_field(payload, len, &at, &field, &field_len) &&
             next_field(payload, len, &at, &field, &field_len) &&
-            same_word(field, field_len, "properties")) {
+            same_word(field, field_len, DARAN_H_PROPERTIES_WORD)) {
             return DARAN_CLIENT_REPLY_UNTIL_END;
         }
         return commands[c].shape;

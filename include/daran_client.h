@@ -28,6 +28,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "daran_protocol.h"
 #include "daran_result.h"
 
 #ifdef __cplusplus
@@ -51,45 +52,15 @@ extern "C" {
 
 /* ---------------------------------------------------------------- commands */
 
-/** Every request of the protocol: X(NAME, word, min values, max values,
- * reply, class). Values are the float fields after the id (modes and the
- * relative flag of mt/mq/mp included); `r`, `w` and `h id properties` carry
- * a path instead. The table is the one source of the builder's words, the
- * reply expectations and the retry rule. */
-#define DARAN_CLIENT_COMMAND_LIST(X)                          \
-    X(T, "t", 1, 3, SILENT, MOTION)                           \
-    X(Q, "q", 1, 3, SILENT, MOTION)                           \
-    X(P, "p", 1, 3, SILENT, MOTION)                           \
-    X(V, "v", 1, 3, SILENT, MOTION)                           \
-    X(C, "c", 1, 3, SILENT, MOTION)                           \
-    X(D, "d", 5, 5, SILENT, MOTION)                           \
-    X(MS, "ms", 3, 3, SILENT, PRESET)                         \
-    X(MT, "mt", 1, 1, SILENT, MOTION)                         \
-    X(MQ, "mq", 1, 1, SILENT, MOTION)                         \
-    X(MP, "mp", 1, 1, SILENT, MOTION)                         \
-    X(MV, "mv", 0, 0, SILENT, MOTION)                         \
-    X(MC, "mc", 0, 0, SILENT, MOTION)                         \
-    X(R, "r", 0, 0, ONE_LINE, QUERY)                          \
-    X(W, "w", 0, 0, SILENT, WRITE)                            \
-    X(SS, "ss", 0, 0, SILENT, SYSTEM)                         \
-    X(SE, "se", 0, 0, SILENT, SYSTEM)                         \
-    X(SR, "sr", 0, 0, SILENT, SYSTEM)                         \
-    X(SC, "sc", 0, 0, SILENT, SYSTEM)                         \
-    X(SZ, "sz", 0, 0, SILENT, SYSTEM)                         \
-    X(ST, "st", 0, 0, SILENT, SYSTEM)                         \
-    X(U, "u", 0, 0, SILENT, SYSTEM)                           \
-    X(F, "f", 0, 0, ONE_LINE, QUERY)                          \
-    X(G, "g", 0, 0, ONE_LINE, QUERY)                          \
-    X(I, "i", 0, 0, ONE_LINE, QUERY)                          \
-    X(E, "e", 0, 0, ERROR_LINES, QUERY)                       \
-    X(H, "h", 0, 0, UNTIL_QUIET, QUERY)                       \
-    X(H_PROPERTIES, "h", 0, 0, UNTIL_END, QUERY)
-
-/** A command: DARAN_CLIENT_CMD_T, …, DARAN_CLIENT_CMD_H_PROPERTIES. */
+/** A command: DARAN_CLIENT_CMD_T, ..., one for each row of the protocol
+ * table (daran_protocol.h, in its order), which is the one source of the
+ * builder's words, value counts, reply expectations and the retry rule. */
 typedef enum daran_client_command {
 /** @cond INTERNAL */
-#define DARAN_CLIENT_CMD_ENUM_(name, word, min, max, reply, cls) DARAN_CLIENT_CMD_##name,
-    DARAN_CLIENT_COMMAND_LIST(DARAN_CLIENT_CMD_ENUM_)
+#define DARAN_CLIENT_CMD_ENUM_(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, \
+                               f1, f2, f3, f4, f5, f6)                                           \
+    DARAN_CLIENT_CMD_##name,
+    DARAN_PROTOCOL_COMMANDS(DARAN_CLIENT_CMD_ENUM_)
 #undef DARAN_CLIENT_CMD_ENUM_
 /** @endcond */
     DARAN_CLIENT_CMD_COUNT /**< how many commands; not a command */
@@ -121,9 +92,10 @@ daran_client_reply_shape_t daran_client_reply_shape(daran_client_command_t comma
 /** The command's class (MOTION outside the enum: the safe answer). O(1). */
 daran_client_class_t daran_client_command_class(daran_client_command_t command);
 /** Whether the link may send the command again after a lost or damaged
- * reply: queries only. A repeated motion command could move twice (a
- * relative `mt`/`mq`/`mp`, a second `q` from a new start), and a repeated
- * `sz`/`sr`/`ss` acts twice; those are never retried. O(1). */
+ * reply: the protocol table's RETRY column (queries). A repeated motion
+ * command could move twice (a relative `mt`/`mq`/`mp`, a second `q` from a
+ * new start), and a repeated `sz`/`sr`/`ss` acts twice; those are never
+ * retried. O(1). */
 bool daran_client_may_retry(daran_client_command_t command);
 
 /* ---------------------------------------------------------------- requests */

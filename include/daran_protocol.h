@@ -115,7 +115,7 @@
       REQ_ID, NONE, NONE, NONE, NONE, NONE)                                                        \
     X(E,  'e', 0,   ALWAYS, QUERY,  ERROR_LINES, RETRY, errors, E, READ_LIST, "",                  \
       REQ_ID, NONE, NONE, NONE, NONE, NONE)                                                        \
-    X(U,  'u', 0,   ALWAYS, SYSTEM, SILENT, RETRY, action, FEED_WATCHDOG, ACTION, "",              \
+    X(U,  'u', 0,   ALWAYS, SYSTEM, SILENT, ONCE,  action, FEED_WATCHDOG, ACTION, "",              \
       REQ_ID, NONE, NONE, NONE, NONE, NONE)
 /* clang-format on */
 

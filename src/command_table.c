@@ -71,6 +71,15 @@ enum { DISCOVERY_FIELDS = 0 DARAN_PROTOCOL_COMMANDS(DISCOVERY_MAX_OF) };
 
 #define DRIVE_COMMANDS(X) DARAN_PROTOCOL_COMMANDS(X)
 
+/* Every row's handler, declared from the table: a row a build adds
+ * (DARAN_EXTRA_COMMANDS) needs no header of the library's. */
+#define DECLARE_HANDLER(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, \
+                        f3, f4, f5, f6)                                                          \
+    ON_DRIVE_##feature(daran_result_t daran_cmd_##handler(daran_drive_t *drive,                 \
+                                                          const daran_request_t *request);)
+DRIVE_COMMANDS(DECLARE_HANDLER)
+#undef DECLARE_HANDLER
+
 /* What the dispatcher and the handlers take for granted, checked by the
  * compiler: every command has its id and fits the field views with room to
  * tell "too many" (the count saturates at DARAN_FIELDS_MAX); a motion

@@ -348,9 +348,75 @@ static void test_every_built_request_is_accepted_by_a_real_core(void)
     }
 }
 
+/* The client's view of every row of the protocol table (daran_protocol.h):
+ * its word, value counts, reply shape, class and retry rule, and a request
+ * of it built with its fewest values is a line a core takes apart the same
+ * way. The drive's view is held to the same rows in tests/unit/test_protocol.c. */
+typedef struct protocol_row {
+    const char *name;
+    char word[3];
+    int min_values;
+    int max_values;
+    daran_client_reply_shape_t reply;
+    int moves; /* MOTION or START: the client's class is MOTION */
+    int may_retry;
+} protocol_row_t;
+#define MOVES_MOTION 1
+#define MOVES_START 1
+#define MOVES_PRESET 0
+#define MOVES_QUERY 0
+#define MOVES_READ 0
+#define MOVES_WRITE 0
+#define MOVES_SYSTEM 0
+#define RETRIES_RETRY 1
+#define RETRIES_ONCE 0
+#define PROTOCOL_ROW(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, f3, \
+                     f4, f5, f6)                                                                    \
+    {#name, {c0, c1, 0}, DARAN_PROTOCOL_MIN_VALUES(f1, f2, f3, f4, f5, f6),                         \
+     DARAN_PROTOCOL_MAX_VALUES(f1, f2, f3, f4, f5, f6), DARAN_CLIENT_REPLY_##reply, MOVES_##cls,     \
+     RETRIES_##retry},
+static const protocol_row_t protocol_rows[] = {DARAN_PROTOCOL_COMMANDS(PROTOCOL_ROW)};
+#undef PROTOCOL_ROW
+
+static void test_every_row_of_the_protocol_table_is_a_command_of_the_client(void)
+{
+    TEST_ASSERT_EQUAL_UINT64(DARAN_CLIENT_CMD_COUNT, sizeof protocol_rows / sizeof protocol_rows[0]);
+    for (int c = 0; c < (int)DARAN_CLIENT_CMD_COUNT; c++) {
+        const protocol_row_t *row = &protocol_rows[c];
+        daran_client_command_t command = (daran_client_command_t)c;
+        TEST_ASSERT_EQUAL_STRING_MESSAGE(row->word, daran_client_command_word(command), row->name);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(row->reply, daran_client_reply_shape(command), row->name);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(row->may_retry, daran_client_may_retry(command), row->name);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(row->moves,
+                                      daran_client_command_class(command) == DARAN_CLIENT_CLASS_MOTION,
+                                      row->name);
+        /* the fewest and the most values build; one more does not */
+        daran_client_request_t request = {.command = command, .id = 1, .path = "vel_limit",
+                                          .value = {.kind = DARAN_CLIENT_VALUE_F32, .f32 = 1.0f}};
+        for (unsigned k = 0; k < DARAN_CLIENT_VALUES_MAX; k++) {
+            request.values[k] = 1.0f;
+        }
+        request.value_count = (uint8_t)row->min_values;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(DARAN_OK, daran_client_build(&request, false, line, sizeof line,
+                                                                   &line_len), row->name);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(0, strncmp(line, row->word, strlen(row->word)), row->name);
+        request.value_count = (uint8_t)row->max_values;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(DARAN_OK, daran_client_build(&request, false, line, sizeof line,
+                                                                   &line_len), row->name);
+        if (row->max_values < (int)DARAN_CLIENT_VALUES_MAX) {
+            request.value_count = (uint8_t)(row->max_values + 1);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(DARAN_ERR_BAD_ARGUMENT,
+                                          daran_client_build(&request, false, line, sizeof line,
+                                                             &line_len),
+                                          row->name);
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
+    RUN_TEST(test_every_row_of_the_protocol_table_is_a_command_of_the_client);
     RUN_TEST(test_the_contracts_worked_examples_are_built_byte_for_byte);
     RUN_TEST(test_the_contracts_checksummed_examples_carry_their_sums);
     RUN_TEST(test_examples_written_with_trailing_zeros_come_out_shortest);

@@ -14,4 +14,5 @@ set(DARAN_UNIT_AREAS
   api
   extensions
   can
+  protocol
 )
