@@ -67,10 +67,20 @@ typedef struct daran_can_slot {
 struct daran_can_bridge;
 
 /** The CAN front end of one drive. Size: sizeof(daran_can_t). */
+/** @cond INTERNAL */
+/* What listens to the frames a front end takes for other nodes: a gateway's
+ * bridge, waiting for a remote drive's reply (can_bridge.c). */
+typedef struct daran_can_listener {
+    void (*frame)(void *ctx, const struct daran_can_slot *frame); /* a frame for another node */
+    void (*tick)(void *ctx);                                      /* at most once a millisecond */
+} daran_can_listener_t;
+/** @endcond */
+
 typedef struct daran_can {
     /** @cond INTERNAL */
     daran_drive_t *drive;
-    struct daran_can_bridge *bridge; /* the drive's bridge, NULL without one */
+    const daran_can_listener_t *listener; /* NULL without one */
+    void *listener_ctx;
     const daran_can_port_t *port;
     void *port_ctx;
     daran_atomic_u16_t head;    /* written by daran_can_receive() only */

@@ -1,7 +1,7 @@
 /* The bridge (can_bridge.c): a line for another drive -> CAN frames, and
  * the answer of a bridged query back as the line that drive would print.
- * drive.c hands it lines it validated; can.c hands it frames from other
- * nodes. */
+ * drive.c hands it lines it validated; the CAN front end hands it frames
+ * from other nodes through the listener it registers (daran_can_t). */
 #ifndef DARAN_BRIDGE_H
 #define DARAN_BRIDGE_H
 
@@ -26,8 +26,6 @@ daran_result_t daran_bridge_line(daran_can_bridge_t *bridge, const daran_request
  * the drive reads no further line. */
 bool daran_bridge_waiting(daran_can_bridge_t *bridge);
 
-/* A frame from another node: the awaited reply, or nothing for the bridge. */
-void daran_bridge_offer(daran_can_bridge_t *bridge, const daran_can_slot_t *frame);
 #endif
 
 #endif /* DARAN_BRIDGE_H */

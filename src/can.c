@@ -7,9 +7,8 @@
 #include <stddef.h>
 #include <string.h>
 
-#include "bridge.h"
 #include "can.h"
-#include "can_bytes.h"
+#include "can_codec.h"
 #include "can_ring.h"
 #include "compiler.h"
 #include "hal.h"
@@ -17,61 +16,12 @@
 
 #if DARAN_ENABLE_CAN
 
-int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
-{
-    /* Exactly: value * 100.0f + 0.5f rounds twice, and a value within an ulp
-     * of a half count went up. |value| = m * 2^-shift with m < 2^24, so
-     * m * 100 < 2^31 is exact in 32 bits and one shift rounds it, half away
-     * from zero. A shift of 0 or less is |value| >= 2^23: far past the
-     * limit (inf and NaN too), so no wider arithmetic is needed. */
-    uint32_t bits;
-    memcpy(&bits, &value, sizeof bits);
-    uint32_t negative = bits >> 31;
-    uint32_t biased = bits >> 23 & 0xFFu;
-    uint32_t significand = bits & 0x7FFFFFu;
-    if (biased != 0u) {
-        significand |= 0x800000u;
-    } else {
-        biased = 1u; /* a subnormal: the same scale as the least normal */
-    }
-    int shift = 150 - (int)biased;
-    uint32_t limit = negative != 0u ? 32768u : 32767u;
-    uint32_t magnitude = limit + 1u;
-    if (shift > 31) {
-        magnitude = 0;
-    } else if (shift > 0) {
-        uint32_t product = significand * 100u;
-        magnitude = (product + (1u << (shift - 1))) >> shift;
-    }
-    int fits = magnitude <= limit;
-    if (!fits) {
-        magnitude = limit;
-    }
-    daran_can_put_u16(bytes, negative != 0u ? 0u - magnitude : magnitude);
-    return saturate || fits;
-}
-
 /* ---- what the drive sends ---- */
-
-DARAN_STATIC_ASSERT(DARAN_SHAPE_FILTERED == 0 && DARAN_SHAPE_TRAPEZOID == 1 &&
-                        DARAN_SHAPE_PASSTHROUGH == 2 && DARAN_SHAPE_VELOCITY == 3 &&
-                        DARAN_SHAPE_TORQUE == 4,
-                    can_codes_follow_the_shape_order);
-
-bool daran_can_transmit(daran_can_t *can, uint32_t id, const uint8_t *data)
-{
-    daran_can_frame_t frame;
-    frame.id = id;
-    frame.dlc = 8;
-    frame.flags = 0;
-    memcpy(frame.data, data, sizeof frame.data);
-    return can->port->send(can->port_ctx, &frame);
-}
 
 /* The drive's own frames: one the port refuses is counted, not retried. */
 static void send(daran_can_t *can, uint32_t id, const uint8_t *data)
 {
-    if (!daran_can_transmit(can, id, data)) {
+    if (!daran_can_send(can->port, can->port_ctx, id, data)) {
         can->unsent++;
     }
 }
@@ -102,7 +52,7 @@ static void send_status(daran_can_t *can, uint32_t node)
     (void)daran_can_put_scaled(data + 4, values[1].f32, 1);
     (void)daran_can_put_scaled(data + 6, values[2].f32, 1);
     uint32_t code = DARAN_CAN_STATUS | (values[3].u32 != 0u ? 2u : 0u) | (values[4].u32 != 0u ? 4u : 0u);
-    send(can, node << 5 | code, data);
+    send(can, DARAN_CAN_ID(node, code), data);
 }
 
 /* The automatic status reply of a motion or preset frame that passed its
@@ -116,22 +66,6 @@ static void reply_state(daran_can_t *can, uint32_t node)
 
 /* ---- the frames for this drive ---- */
 
-/* The mode of a velocity (else torque) field, raw or x 100 (C1): the mode
- * as the ASCII line writes it, or 0 for none of them. */
-static float mode_of(uint32_t raw, bool torque)
-{
-    if (raw >= 100u && raw % 100u == 0u) {
-        raw /= 100u;
-    }
-    if (raw == 1u) {
-        return 1.0f;
-    }
-    if (raw == 2u) {
-        return torque ? 6.0f : 2.0f; /* c's mode 2 is the torque ramp, 6 */
-    }
-    return raw == 6u && torque ? 6.0f : 0.0f;
-}
-
 /* A value the motion checks refused, as opposed to the drive's state: the
  * frame then gets no status reply (C10, C27). */
 static bool value_refused(daran_result_t result)
@@ -144,10 +78,8 @@ static bool value_refused(daran_result_t result)
 static void direct_motion(daran_can_t *can, uint32_t node, uint32_t code, const uint8_t *data)
 {
     daran_shape_t shape = (daran_shape_t)(code - DARAN_CAN_TRACK);
-    float values[3] = {daran_can_get_f32(data), daran_can_get_scaled(data + 4), daran_can_get_scaled(data + 6)};
-    if (shape >= DARAN_SHAPE_VELOCITY) {
-        values[2] = mode_of(daran_can_get_u16(data + 6), shape == DARAN_SHAPE_TORQUE);
-    }
+    float values[3];
+    daran_can_decode_values((daran_can_layout_t)shape, data, values);
     daran_result_t result = daran_is_finite(values[0]) ? daran_shape_check(shape, values, 3)
                                                        : DARAN_ERR_INVALID_VALUE;
     if (result == DARAN_OK) {
@@ -163,8 +95,8 @@ static void direct_motion(daran_can_t *can, uint32_t node, uint32_t code, const 
 static void preset(daran_can_t *can, uint32_t node, const uint8_t *data)
 {
 #if DARAN_ENABLE_MULTI_MOTOR
-    const float values[DARAN_PRESET_VALUES] = {daran_can_get_f32(data), daran_can_get_scaled(data + 4),
-                                               daran_can_get_scaled(data + 6)};
+    float values[DARAN_PRESET_VALUES];
+    daran_can_decode_values(DARAN_CAN_LAYOUT_PRESET, data, values);
     if (!daran_is_finite(values[0])) {
         return;
     }
@@ -185,7 +117,9 @@ static void start(daran_can_t *can, uint32_t subcode, const uint8_t *data, bool 
     daran_drive_t *drive = can->drive;
     uint32_t first = daran_can_get_u16(data + 4);
     if (subcode == DARAN_CAN_SUB_START_IMPEDANCE) {
-        (void)daran_start_impedance(drive, daran_can_get_scaled(data + 4), daran_can_get_scaled(data + 6), broadcast);
+        float gains[3];
+        daran_can_decode_values(DARAN_CAN_LAYOUT_GAINS, data, gains);
+        (void)daran_start_impedance(drive, gains[1], gains[2], broadcast);
         return;
     }
     daran_shape_t shape = (daran_shape_t)(subcode - DARAN_CAN_SUB_START_TRACK);
@@ -199,7 +133,7 @@ static void start(daran_can_t *can, uint32_t subcode, const uint8_t *data, bool 
         if (!(p3 >= 0.0f && p3 <= 10.0f)) {
             return;
         }
-        values[2] = mode_of((uint32_t)(p3 * 100.0f + 0.5f), shape == DARAN_SHAPE_TORQUE);
+        values[2] = daran_can_mode_of((uint32_t)(p3 * 100.0f + 0.5f), shape == DARAN_SHAPE_TORQUE);
         if (values[2] == 0.0f) {
             return;
         }    } else if (first == 1u || first == 100u) {
@@ -219,13 +153,10 @@ static void start(daran_can_t *can, uint32_t subcode, const uint8_t *data, bool 
 /* 0x008 (2.3). None of them is answered. */
 static void system_command(daran_can_t *can, const uint8_t *data, bool broadcast)
 {
-    static const uint8_t action_of[] = {
-        DARAN_ACTION_SAVE_CONFIG, DARAN_ACTION_ERASE_CONFIG, DARAN_ACTION_REBOOT,
-        DARAN_ACTION_CLEAR_ERRORS, DARAN_ACTION_SET_ZERO, DARAN_ACTION_ESTOP};
     uint32_t subcode = daran_can_get_u32(data);
-    if (subcode >= DARAN_CAN_SUB_SAVE && subcode <= DARAN_CAN_SUB_ESTOP) {
-        (void)daran_run_action(can->drive,
-                               (daran_action_t)action_of[subcode - DARAN_CAN_SUB_SAVE]);
+    daran_action_t action;
+    if (daran_can_action_of(subcode, &action)) {
+        (void)daran_run_action(can->drive, action);
     } else if (subcode >= DARAN_CAN_SUB_START_TRACK && subcode <= DARAN_CAN_SUB_START_IMPEDANCE) {
         start(can, subcode, data, broadcast);
     } else if ((subcode == DARAN_CAN_SUB_RESTORE || subcode == DARAN_CAN_SUB_FIRMWARE) &&
@@ -250,10 +181,8 @@ static void read_property(daran_can_t *can, uint32_t node, const uint8_t *data)
         return; /* no such address here (C24), or the HAL could not read it */
     }
     uint8_t reply[8];
-    daran_can_put_u16(reply, address);
-    daran_can_put_u16(reply + 2, daran_can_type_of(prop));
-    daran_can_put_u32(reply + 4, value.u32);
-    send(can, node << 5 | DARAN_CAN_READ, reply);
+    daran_can_put_property(reply, address, daran_can_type_of(prop), value.u32);
+    send(can, DARAN_CAN_ID(node, DARAN_CAN_READ), reply);
 }
 
 /* A write's value, decoded by the frame's type code and converted exactly
@@ -344,8 +273,8 @@ static void duplicate_id(daran_drive_t *drive)
 static void run_frame(daran_can_t *can, const daran_can_slot_t *frame, uint32_t now)
 {
     daran_drive_t *drive = can->drive;
-    uint32_t node = (uint32_t)frame->id >> 5;
-    uint32_t code = frame->id & 0x1Fu;
+    uint32_t node = DARAN_CAN_NODE_OF(frame->id);
+    uint32_t code = DARAN_CAN_CODE_OF(frame->id);
     daran_value_t own;
     if (daran_get(drive, DARAN_PROP_CAN_NODE_ID, &own) != DARAN_OK) {
         return;
@@ -357,11 +286,9 @@ static void run_frame(daran_can_t *can, const daran_can_slot_t *frame, uint32_t 
         return;
     }
     if (node != own.u32 && node != 0u) {
-#if DARAN_ENABLE_CAN_BRIDGE
-        if (can->bridge != NULL) {
-            daran_bridge_offer(can->bridge, frame); /* a reply to a bridged query? */
+        if (can->listener != NULL) {
+            can->listener->frame(can->listener_ctx, frame); /* a reply to a bridged query? */
         }
-#endif
         return; /* C28 */
     }
     if (!known_code(code)) {
@@ -462,11 +389,9 @@ size_t daran_can_poll(daran_can_t *can)
     if (can->enabled && now != can->kept_ms) {
         can->kept_ms = now;
         keep_time(can, now);
-#if DARAN_ENABLE_CAN_BRIDGE
-        if (can->bridge != NULL) {
-            (void)daran_bridge_waiting(can->bridge); /* its timeout */
+        if (can->listener != NULL) {
+            can->listener->tick(can->listener_ctx); /* a bridged query's timeout */
         }
-#endif
     }
     return queued;
 }

@@ -4,6 +4,7 @@
  * a block) and each property's low byte: a frame's property is found by a
  * walk over the runs of its high byte. */
 #include "can.h"
+#include "can_codec.h"
 
 #if DARAN_ENABLE_CAN
 

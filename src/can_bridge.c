@@ -7,7 +7,7 @@
  * (docs/can.md, "The bridge", says why there is no retry). */
 #include "bridge.h"
 #include "can.h"
-#include "can_bytes.h"
+#include "can_codec.h"
 #include "compiler.h"
 #include "handlers.h"
 #include "property.h"
@@ -30,6 +30,10 @@ DARAN_STATIC_ASSERT(DARAN_QUERY_END_E - DARAN_QUERY_END_I <= DARAN_CAN_BRIDGE_RE
                         DARAN_QUERY_END_I - DARAN_QUERY_END_G + 1 <= DARAN_CAN_BRIDGE_READS,
                     a_query_fits_the_bridge_reads);
 
+static void offer(void *bridge, const daran_can_slot_t *frame);
+static void tick(void *bridge);
+static const daran_can_listener_t bridge_listener = {offer, tick};
+
 daran_result_t daran_can_bridge_init_checked(daran_can_bridge_t *bridge, daran_can_t *can,
                                              uint32_t build_check)
 {
@@ -44,7 +48,8 @@ daran_result_t daran_can_bridge_init_checked(daran_can_bridge_t *bridge, daran_c
     /* nothing pending; every other member is written before it is read */
     bridge->count = 0;
     bridge->can = can;
-    can->bridge = bridge;
+    can->listener = &bridge_listener;
+    can->listener_ctx = bridge;
     can->drive->bridge = bridge;
     return DARAN_OK;
 }
@@ -63,17 +68,19 @@ bool daran_bridge_active(const daran_drive_t *drive)
 static daran_result_t send_or_fail(daran_can_bridge_t *bridge, uint32_t node, uint32_t code,
                                    const uint8_t *data)
 {
-    return daran_can_transmit(bridge->can, node << 5 | code, data) ? DARAN_OK
-                                                                   : DARAN_ERR_BUS_ERROR;
+    return daran_can_send(bridge->can->port, bridge->can->port_ctx, DARAN_CAN_ID(node, code), data)
+               ? DARAN_OK
+               : DARAN_ERR_BUS_ERROR;
 }
 
 /* ---- queries: reads one at a time ---- */
 
 static daran_result_t ask_next(daran_can_bridge_t *bridge)
 {
-    uint8_t data[8] = {0};
-    daran_can_put_u16(data, bridge->reads[bridge->next].address);
-    daran_can_put_u16(data + 2, bridge->reads[bridge->next].type); /* the row's (5.2) */
+    uint8_t data[8];
+    /* the row's type (5.2) */
+    daran_can_put_property(data, bridge->reads[bridge->next].address,
+                           bridge->reads[bridge->next].type, 0);
     bridge->asked_ms = bridge->can->port->now_ms(bridge->can->port_ctx);
     return send_or_fail(bridge, bridge->node, DARAN_CAN_READ, data);
 }
@@ -203,14 +210,15 @@ static void finish(daran_can_bridge_t *bridge, daran_result_t result)
     bridge->count = 0;
 }
 
-void daran_bridge_offer(daran_can_bridge_t *bridge, const daran_can_slot_t *frame)
+static void offer(void *context, const daran_can_slot_t *frame)
 {
+    daran_can_bridge_t *bridge = context;
     if (bridge->count == 0u) {
         return;
     }
     daran_can_bridge_read_t *read = &bridge->reads[bridge->next];
     uint32_t type = daran_can_get_u16(frame->data + 2);
-    if (frame->id != (uint16_t)((unsigned)bridge->node << 5 | DARAN_CAN_READ) ||
+    if (frame->id != DARAN_CAN_ID(bridge->node, DARAN_CAN_READ) ||
         daran_can_get_u16(frame->data) != read->address || type > DARAN_CAN_TYPE_S32) {
         return; /* not the reply awaited: discarded (C32, C38) */
     }
@@ -227,6 +235,11 @@ void daran_bridge_offer(daran_can_bridge_t *bridge, const daran_can_slot_t *fram
     finish(bridge, DARAN_OK);
 }
 
+static void tick(void *bridge)
+{
+    (void)daran_bridge_waiting(bridge);
+}
+
 bool daran_bridge_waiting(daran_can_bridge_t *bridge)
 {
     if (bridge->count == 0u) {
@@ -241,14 +254,6 @@ bool daran_bridge_waiting(daran_can_bridge_t *bridge)
 }
 
 /* ---- a line: its values parsed into the bridge, then its frames ---- */
-
-/* Scaled fields of a frame: refused when one leaves the s16 range (C3). */
-static daran_result_t put_scaled_pair(uint8_t *data, float first, float second)
-{
-    return daran_can_put_scaled(data + 4, first, 0) && daran_can_put_scaled(data + 6, second, 0)
-               ? DARAN_OK
-               : DARAN_ERR_OUT_OF_RANGE;
-}
 
 /* Step 6 of the checks for the line's values, as its handler makes them
  * (C31), kept in the bridge: the parse is the core's deepest call chain,
@@ -307,55 +312,29 @@ static daran_result_t send_motion(daran_can_bridge_t *bridge, daran_shape_t shap
     uint8_t count = bridge->given;
     /* omitted optional values: 0, and mode 1 for v and c (5.2) */
     for (uint8_t i = count; i < 3u; i++) {
-        values[i] = 0.0f;
+        values[i] = i == 2u && shape >= DARAN_SHAPE_VELOCITY ? 1.0f : 0.0f;
     }
-    uint8_t data[8] = {0};
-    daran_can_put_f32(data, values[0]);
-    daran_result_t result;
-    switch (shape) {
-    case DARAN_SHAPE_FILTERED:
-        /* the velocity every drive ignores is saturated, not refused (C3) */
-        (void)daran_can_put_scaled(data + 4, values[1], 1);
-        result = daran_can_put_scaled(data + 6, values[2], 0) ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
-        break;
-    case DARAN_SHAPE_TRAPEZOID:
-        if (count < 3u) {
-            /* the remote's own limits first, then the move (C37) */
-            if (count == 2u && !daran_can_put_scaled(data + 4, values[1], 0)) {
-                return DARAN_ERR_OUT_OF_RANGE;
-            }
-            return ask(bridge, node, ANSWER_TRAPEZOID, limits + (count - 1u), (uint8_t)(3u - count));
+    uint8_t data[8];
+    if (shape == DARAN_SHAPE_TRAPEZOID && count < 3u) {
+        /* the remote's own limits first, then the move (C37) */
+        if (count == 2u && !daran_can_put_scaled(data + 4, values[1], 0)) {
+            return DARAN_ERR_OUT_OF_RANGE;
         }
-        result = put_scaled_pair(data, values[1], values[2]);
-        break;
-    case DARAN_SHAPE_VELOCITY:
-    case DARAN_SHAPE_TORQUE: {
-        uint32_t mode = count == 3u ? (uint32_t)values[2] : 1u;
-        if (shape == DARAN_SHAPE_TORQUE && mode == 2u) {
-            mode = 6u; /* the vendor's drives know the torque ramp as 6 (C40) */
-        }
-        daran_can_put_u16(data + 6, mode);
-        result = daran_can_put_scaled(data + 4, values[1], 0) ? DARAN_OK : DARAN_ERR_OUT_OF_RANGE;
-        break;
+        return ask(bridge, node, ANSWER_TRAPEZOID, limits + (count - 1u), (uint8_t)(3u - count));
     }
-    case DARAN_SHAPE_IMPEDANCE: {
+    if (shape == DARAN_SHAPE_IMPEDANCE) {
         /* a preset, then its start at the same node (C12) */
         uint8_t start[8] = {DARAN_CAN_SUB_START_IMPEDANCE, 0, 0, 0, 0, 0, 0, 0};
-        result = put_scaled_pair(data, values[1], values[2]);
-        if (result == DARAN_OK) {
-            result = put_scaled_pair(start, values[3], values[4]);
+        if (!daran_can_encode_values(DARAN_CAN_LAYOUT_PRESET, values, data) ||
+            !daran_can_encode_values(DARAN_CAN_LAYOUT_GAINS, values + 2, start)) {
+            return DARAN_ERR_OUT_OF_RANGE;
         }
-        if (result == DARAN_OK) {
-            result = send_or_fail(bridge, node, DARAN_CAN_PRESET, data);
-        }
+        daran_result_t result = send_or_fail(bridge, node, DARAN_CAN_PRESET, data);
         return result == DARAN_OK ? send_or_fail(bridge, node, DARAN_CAN_SYSTEM, start) : result;
     }
-    default:
-        result = put_scaled_pair(data, values[1], values[2]);
-        break;
-    }
-    return result == DARAN_OK ? send_or_fail(bridge, node, DARAN_CAN_TRACK + (uint32_t)shape, data)
-                              : result;
+    return daran_can_encode_values((daran_can_layout_t)shape, values, data)
+               ? send_or_fail(bridge, node, DARAN_CAN_TRACK + (uint32_t)shape, data)
+               : DARAN_ERR_OUT_OF_RANGE;
 }
 
 /* The frames of a line whose values parse_line() kept (5.2). */
@@ -378,24 +357,20 @@ static DARAN_NOINLINE daran_result_t send_line(daran_can_bridge_t *bridge,
         if (node == 0u && prop == DARAN_PROP_CAN_NODE_ID) {
             return DARAN_OK; /* "the drive on this link" only, never every drive's id (C34) */
         }
-        daran_can_put_u16(data, daran_can_address_of(prop));
-        daran_can_put_u16(data + 2, daran_can_type_of(prop));
-        daran_can_put_u32(data + 4, bridge->reads[0].bits);
+        daran_can_put_property(data, daran_can_address_of(prop), daran_can_type_of(prop),
+                               bridge->reads[0].bits);
         return send_or_fail(bridge, node, DARAN_CAN_WRITE, data);
-    case DARAN_CAN_FORM_PRESET: {
-        daran_can_put_f32(data, bridge->values[0]);
+    case DARAN_CAN_FORM_PRESET:
         /* a mode in p3 goes x 100, as the vendor's libraries send it (C40) */
-        daran_result_t result = put_scaled_pair(data, bridge->values[1], bridge->values[2]);
-        return result == DARAN_OK ? send_or_fail(bridge, node, DARAN_CAN_PRESET, data) : result;
-    }
+        return daran_can_encode_values(DARAN_CAN_LAYOUT_PRESET, bridge->values, data)
+                   ? send_or_fail(bridge, node, DARAN_CAN_PRESET, data)
+                   : DARAN_ERR_OUT_OF_RANGE;
     case DARAN_CAN_FORM_START:
         data[0] = (uint8_t)(DARAN_CAN_SUB_START_TRACK + command->arg);
         data[4] = bridge->given; /* the relative flag (C2) */
         return send_or_fail(bridge, node, DARAN_CAN_SYSTEM, data);
     case DARAN_CAN_FORM_ACTION:
-        /* the HAL actions 0..5 are the sub-codes 1..6; the feed has its own (C36) */
-        data[0] = command->arg == DARAN_ACTION_FEED_WATCHDOG ? DARAN_CAN_SUB_FEED
-                                                             : (uint8_t)(command->arg + 1u);
+        data[0] = (uint8_t)daran_can_subcode_of((daran_action_t)command->arg); /* C36 */
         return send_or_fail(bridge, node, DARAN_CAN_SYSTEM, data);
     case DARAN_CAN_FORM_LOCAL:
 #if DARAN_ENABLE_HELP

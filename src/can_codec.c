@@ -1,0 +1,112 @@
+/* The CAN codec (can_codec.h), what a drive's front end needs of it: the
+ * value frames' layouts as one table and their decoder, the mode and action
+ * maps, exact scaling, sending a frame. The encoder a gateway's bridge
+ * needs is can_encode.c, counted with the bridge. */
+#include "can_codec.h"
+
+#include "compiler.h"
+#include "handlers.h"
+
+#if DARAN_ENABLE_CAN
+
+DARAN_STATIC_ASSERT(DARAN_SHAPE_FILTERED == 0 && DARAN_SHAPE_TRAPEZOID == 1 &&
+                        DARAN_SHAPE_PASSTHROUGH == 2 && DARAN_SHAPE_VELOCITY == 3 &&
+                        DARAN_SHAPE_TORQUE == 4 &&
+                        (int)DARAN_CAN_LAYOUT_TORQUE == (int)DARAN_SHAPE_TORQUE &&
+                        DARAN_CAN_TORQUE - DARAN_CAN_TRACK == DARAN_SHAPE_TORQUE,
+                    can_codes_follow_the_shape_order);
+DARAN_STATIC_ASSERT(DARAN_ACTION_SAVE_CONFIG == 0 && DARAN_ACTION_ESTOP == 5 &&
+                        DARAN_CAN_SUB_ESTOP - DARAN_CAN_SUB_SAVE == DARAN_ACTION_ESTOP,
+                    can_subcodes_follow_the_action_order);
+
+#define LAYOUT(at4, at6) (uint8_t)((at4) | (at6) << 2)
+const uint8_t daran_can_layouts[] = {
+    [DARAN_CAN_LAYOUT_TRACK] = LAYOUT(DARAN_CAN_FIELD_SCALED_SATURATED, DARAN_CAN_FIELD_SCALED),
+    [DARAN_CAN_LAYOUT_TRAPEZOID] = LAYOUT(DARAN_CAN_FIELD_SCALED, DARAN_CAN_FIELD_SCALED),
+    [DARAN_CAN_LAYOUT_PASSTHROUGH] = LAYOUT(DARAN_CAN_FIELD_SCALED, DARAN_CAN_FIELD_SCALED),
+    [DARAN_CAN_LAYOUT_VELOCITY] = LAYOUT(DARAN_CAN_FIELD_SCALED, DARAN_CAN_FIELD_MODE),
+    [DARAN_CAN_LAYOUT_TORQUE] = LAYOUT(DARAN_CAN_FIELD_SCALED, DARAN_CAN_FIELD_TORQUE_MODE),
+    [DARAN_CAN_LAYOUT_PRESET] = LAYOUT(DARAN_CAN_FIELD_SCALED, DARAN_CAN_FIELD_SCALED),
+    [DARAN_CAN_LAYOUT_GAINS] = LAYOUT(DARAN_CAN_FIELD_SCALED, DARAN_CAN_FIELD_SCALED) | DARAN_CAN_NO_F32,
+};
+
+float daran_can_mode_of(uint32_t raw, bool torque)
+{
+    if (raw >= 100u && raw % 100u == 0u) {
+        raw /= 100u;
+    }
+    if (raw == 1u) {
+        return 1.0f;
+    }
+    if (raw == 2u) {
+        return torque ? 6.0f : 2.0f;
+    }
+    return raw == 6u && torque ? 6.0f : 0.0f;
+}
+
+void daran_can_decode_values(daran_can_layout_t layout, const uint8_t *data, float *values)
+{
+    unsigned fields = daran_can_layouts[layout];
+    if ((fields & DARAN_CAN_NO_F32) == 0u) {
+        values[0] = daran_can_get_f32(data);
+    }
+    for (unsigned i = 1; i <= 2u; i++, fields >>= 2) {
+        const uint8_t *at = data + 2u + 2u * i;
+        unsigned kind = fields & 3u;
+        values[i] = kind >= DARAN_CAN_FIELD_MODE ? daran_can_mode_of(daran_can_get_u16(at), kind == DARAN_CAN_FIELD_TORQUE_MODE)
+                                       : daran_can_get_scaled(at);
+    }
+}
+
+bool daran_can_action_of(uint32_t subcode, daran_action_t *action)
+{
+    *action = (daran_action_t)(subcode - DARAN_CAN_SUB_SAVE);
+    return subcode >= DARAN_CAN_SUB_SAVE && subcode <= DARAN_CAN_SUB_ESTOP;
+}
+
+int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
+{
+    /* Exactly: value * 100.0f + 0.5f rounds twice, and a value within an ulp
+     * of a half count went up. |value| = m * 2^-shift with m < 2^24, so
+     * m * 100 < 2^31 is exact in 32 bits and one shift rounds it, half away
+     * from zero. A shift of 0 or less is |value| >= 2^23: far past the
+     * limit (inf and NaN too), so no wider arithmetic is needed. */
+    uint32_t bits;
+    memcpy(&bits, &value, sizeof bits);
+    uint32_t negative = bits >> 31;
+    uint32_t biased = bits >> 23 & 0xFFu;
+    uint32_t significand = bits & 0x7FFFFFu;
+    if (biased != 0u) {
+        significand |= 0x800000u;
+    } else {
+        biased = 1u; /* a subnormal: the same scale as the least normal */
+    }
+    int shift = 150 - (int)biased;
+    uint32_t limit = negative != 0u ? 32768u : 32767u;
+    uint32_t magnitude = limit + 1u;
+    if (shift > 31) {
+        magnitude = 0;
+    } else if (shift > 0) {
+        uint32_t product = significand * 100u;
+        magnitude = (product + (1u << (shift - 1))) >> shift;
+    }
+    int fits = magnitude <= limit;
+    if (!fits) {
+        magnitude = limit;
+    }
+    daran_can_put_u16(bytes, negative != 0u ? 0u - magnitude : magnitude);
+    return saturate || fits;
+}
+
+bool daran_can_send(const daran_can_port_t *port, void *port_ctx, uint32_t id,
+                    const uint8_t *data)
+{
+    daran_can_frame_t frame;
+    frame.id = id;
+    frame.dlc = 8;
+    frame.flags = 0;
+    memcpy(frame.data, data, sizeof frame.data);
+    return port->send(port_ctx, &frame);
+}
+
+#endif /* DARAN_ENABLE_CAN */
