@@ -25,7 +25,8 @@ set(DARAN_STRICT_WARNINGS
 set_property(GLOBAL PROPERTY DARAN_CORE_SOURCES
   can.c can_address.c can_bridge.c can_codec.c can_encode.c can_ring.c checksum.c command_table.c commands_common.c commands_motion.c commands_multi.c
   commands_property.c commands_query.c commands_system.c discovery.c drive.c framer.c
-  hal.c number.c port_commands.c property_table.c reply.c result.c rx_ring.c telemetry.c text.c
+  hal.c number.c port_commands.c property_table.c reply.c request_preset.c request_property.c
+  request_state.c result.c rx_ring.c telemetry.c text.c
   version.c)
 set_property(GLOBAL PROPERTY DARAN_STRICT_WARNINGS ${DARAN_STRICT_WARNINGS})
 

@@ -1,5 +1,5 @@
 /* The CAN front end: a frame for this drive -> the same requests an ASCII
- * line becomes (handlers.h) -> the HAL, and the frames the drive sends:
+ * line becomes (request.h) -> the HAL, and the frames the drive sends:
  * read replies, status frames, heartbeats (docs/can.md; the decisions C1..C30
  * of the contract are cited where they decide). A frame is decoded and
  * checked whole before any request runs, and a refused frame has no effect:
@@ -11,8 +11,8 @@
 #include "can_codec.h"
 #include "can_ring.h"
 #include "compiler.h"
-#include "hal.h"
-#include "handlers.h"
+#include "property.h"
+#include "request.h"
 
 #if DARAN_ENABLE_CAN
 

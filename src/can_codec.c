@@ -5,7 +5,7 @@
 #include "can_codec.h"
 
 #include "compiler.h"
-#include "handlers.h"
+#include "request.h"
 
 #if DARAN_ENABLE_CAN
 

@@ -1,14 +1,6 @@
-/* What every command handler needs: values from fields and the drive's
- * state. */
+/* What every command handler needs: values from fields. */
 #include "handlers.h"
-#include "hal.h"
 #include "number.h"
-
-bool daran_is_finite(float value)
-{
-    /* inf - inf and nan - nan are nan, which compares unequal to 0. */
-    return value - value == 0.0f;
-}
 
 daran_result_t daran_field_f32(const daran_field_t *field, float *out)
 {
@@ -44,24 +36,4 @@ daran_result_t daran_field_motor(const daran_field_t *field, uint8_t *out)
     }
     *out = (uint8_t)id;
     return DARAN_OK;
-}
-
-daran_result_t daran_check_motion_allowed(daran_drive_t *drive)
-{
-    daran_value_t value;
-    daran_result_t result = daran_get(drive, DARAN_PROP_AXIS_ERROR, &value);
-    if (result != DARAN_OK) {
-        return result;
-    }
-    if ((value.u32 & DARAN_FLAG_ESTOP) != 0u) {
-        return DARAN_ERR_ESTOP_ACTIVE;
-    }
-    if (value.u32 != 0u) {
-        return DARAN_ERR_MOTOR_FAULT;
-    }
-    result = daran_get(drive, DARAN_PROP_CURRENT_STATE, &value);
-    if (result != DARAN_OK) {
-        return result;
-    }
-    return value.u32 == DARAN_STATE_CLOSED_LOOP ? DARAN_OK : DARAN_ERR_MOTOR_IDLE;
 }

@@ -173,7 +173,7 @@ daran_result_t daran_shape_move(daran_shape_t shape_id, const float *values, uin
 
 /* Build the move and run it. Kept out of daran_cmd_motion() so the move is not
  * on the stack while the values are parsed: that chain is the core's deepest. */
-DARAN_CAN_SHARED DARAN_NOINLINE daran_result_t daran_run_motion(daran_drive_t *drive, daran_shape_t shape_id,
+DARAN_NOINLINE daran_result_t daran_run_motion(daran_drive_t *drive, daran_shape_t shape_id,
                                                const float *values, uint8_t count)
 {
     daran_move_t move;
@@ -184,7 +184,7 @@ DARAN_CAN_SHARED DARAN_NOINLINE daran_result_t daran_run_motion(daran_drive_t *d
     return result != DARAN_OK ? result : daran_start_move(drive, &move);
 }
 
-DARAN_BRIDGE_SHARED daran_result_t daran_parse_motion(const daran_request_t *request,
+daran_result_t daran_parse_motion(const daran_request_t *request,
                                                       float *values, uint8_t *count)
 {
     const motion_shape_t *shape = &shapes[request->command->arg];

@@ -6,7 +6,7 @@
 #include "property.h"
 #include "reply.h"
 
-DARAN_BRIDGE_SHARED void daran_append_values(daran_drive_t *drive, const daran_value_t *values,
+void daran_append_values(daran_drive_t *drive, const daran_value_t *values,
                                              const uint8_t *types, size_t count)
 {
     for (size_t i = 0; i < count; i++) {
@@ -105,7 +105,7 @@ static const uint8_t register_name_len[] = {REGISTER_LINES(NAME_LEN)};
 #undef NAME_LEN
 DARAN_STATIC_ASSERT(sizeof register_name_len == ERROR_REGISTER_COUNT, a_name_for_each_register);
 
-DARAN_BRIDGE_SHARED void daran_reply_error_registers(daran_drive_t *drive, const uint32_t *values)
+void daran_reply_error_registers(daran_drive_t *drive, const uint32_t *values)
 {
     const char *name = register_names;
     for (size_t i = 0; i < ERROR_REGISTER_COUNT; i++) {
