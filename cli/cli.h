@@ -104,16 +104,6 @@ cli_status_t cli_transact_failed(cli_session_t *s, const daran_client_request_t 
  * or a gateway's `error: no reply` (the drive behind it did not answer). */
 cli_status_t cli_status_of(daran_result_t result, bool drive_error);
 
-/** Print "daran: <message>" on stderr and return `status`. */
-cli_status_t cli_fail(cli_status_t status, const char *format, ...)
-    __attribute__((format(printf, 2, 3)));
-
-/** Catch SIGINT, SIGTERM and SIGHUP from now on, for a command that must
- * clean up (watch, shell): they set cli_interrupted() and end any wait. */
-void cli_catch_signals(void);
-/** A caught signal came. */
-bool cli_interrupted(void);
-
 /** The request as text (no checksum, no line end), for messages. */
 size_t cli_request_text(const daran_client_request_t *request, char *buf, size_t size);
 /** Report the port's failure (s->port_errno) and return CLI_PORT_ERROR. */
@@ -124,7 +114,23 @@ cli_status_t cli_port_status(cli_session_t *s);
  * Returns early on a signal. */
 void cli_session_pump(cli_session_t *s, uint32_t ms);
 
-/** A millisecond clock (monotonic). */
+/* ------------------------------------------------------------ fail.c */
+
+/** Print "daran: <message>" on stderr and return `status`. */
+cli_status_t cli_fail(cli_status_t status, const char *format, ...)
+    __attribute__((format(printf, 2, 3)));
+
+/* ------------------------------------------------------------ signals.c */
+
+/** Catch SIGINT, SIGTERM and SIGHUP from now on, for a command that must
+ * clean up (watch, shell): they set cli_interrupted() and end any wait. */
+void cli_catch_signals(void);
+/** A caught signal came. */
+bool cli_interrupted(void);
+
+/* ------------------------------------------------------------ serial.c */
+
+/** A millisecond clock (monotonic): the link's, and every wait's. */
 uint32_t cli_now_ms(void);
 
 /* ------------------------------------------------------------ readback.c */

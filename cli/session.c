@@ -1,50 +1,12 @@
 /* A session: the port, the link over it, and the one place where a link
  * result becomes an exit status and a message (cli.h). */
 #include <errno.h>
-#include <signal.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "cli.h"
 #include "serial.h"
-
-static volatile sig_atomic_t interrupted;
-
-static void on_signal(int signo)
-{
-    (void)signo;
-    interrupted = 1;
-}
-
-bool cli_interrupted(void)
-{
-    return interrupted != 0;
-}
-
-void cli_catch_signals(void)
-{
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = 0; /* no SA_RESTART: a waiting poll() returns at once */
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
-}
-
-cli_status_t cli_fail(cli_status_t status, const char *format, ...)
-{
-    va_list args;
-    va_start(args, format);
-    fputs("daran: ", stderr);
-    vfprintf(stderr, format, args);
-    fputc('\n', stderr);
-    va_end(args);
-    return status;
-}
 
 static void session_report(void *ctx, const daran_client_report_t *report)
 {
