@@ -238,26 +238,26 @@ static cli_status_t restore_save(cli_session_t *s, uint8_t id)
     daran_client_request_t request = {.command = DARAN_CLIENT_CMD_SS, .id = id};
     return cli_transact(s, &request, NULL, NULL, false, NULL);
 }
-static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
+
+/* The arguments: ID FILE [--save] [--force]. */
+static cli_status_t restore_parse_args(int argc, char **argv, restore_t *r, bool *save,
+                                       bool *force)
 {
-    static restore_t r; /* 60 KiB: kept off the stack */
-    bool save = false;
-    bool force = false;
     int positional = 0;
     for (int i = 0; i < argc; i++) {
         if (strcmp(argv[i], "--save") == 0) {
-            save = true;
+            *save = true;
         } else if (strcmp(argv[i], "--force") == 0) {
-            force = true;
+            *force = true;
         } else if (strncmp(argv[i], "--", 2) == 0) {
             return cli_usage(&cli_cmd_restore, "no option %s", argv[i]);
         } else if (positional == 0) {
-            if (!cli_parse_id(argv[i], false, &r.id)) {
+            if (!cli_parse_id(argv[i], false, &r->id)) {
                 return cli_usage(&cli_cmd_restore, "\"%s\" is not a motor id (1..63)", argv[i]);
             }
             positional++;
         } else if (positional == 1) {
-            r.name = argv[i];
+            r->name = argv[i];
             positional++;
         } else {
             return cli_usage(&cli_cmd_restore, "one drive and one file (\"%s\" too many)",
@@ -267,29 +267,65 @@ static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
     if (positional != 2) {
         return cli_usage(&cli_cmd_restore, "a drive id and a file are needed");
     }
-    cli_status_t status = dump_file_read(r.name, r.id, &r.file);
+    return CLI_OK;
+}
+
+/* Everything before the first write: the file, the drive's firmware and
+ * what it holds now. */
+static cli_status_t restore_prepare(cli_session_t *s, restore_t *r, bool force)
+{
+    cli_status_t status = dump_file_read(r->name, r->id, &r->file);
     if (status != CLI_OK) {
         return status;
     }
-    if (r.file.count == 0) {
-        return cli_fail(CLI_USAGE, "%s: no `w` line to restore", r.name);
+    if (r->file.count == 0) {
+        return cli_fail(CLI_USAGE, "%s: no `w` line to restore", r->name);
     }
-    if (r.file.firmware[0] == '\0' && !force) {
+    if (r->file.firmware[0] == '\0' && !force) {
         return cli_fail(CLI_USAGE, "%s names no firmware (no `" DUMP_FIRMWARE_HEAD "…` line); "
-                        "--force restores it anyway", r.name);
+                        "--force restores it anyway", r->name);
     }
     status = cli_session_connect(s);
     if (status == CLI_OK) {
-        status = restore_check_firmware(s, &r, force);
+        status = restore_check_firmware(s, r, force);
     }
     if (status == CLI_OK) {
-        status = restore_read_before(s, &r);
+        status = restore_read_before(s, r);
     }
-    if (status != CLI_OK) {
-        return status;
+    return status;
+}
+
+static void restore_print_outcome(const cli_session_t *s, const restore_t *r, bool saved_to_nvm)
+{
+    if (s->options.json) {
+        printf("],\"lines\":%zu,\"written\":%zu,\"complete\":%s,\"compared\":%zu,"
+               "\"saved\":%s", r->file.count, r->written,
+               r->written == r->file.count ? "true" : "false", r->compared,
+               saved_to_nvm ? "true" : "false");
+        if (r->failed != NULL) {
+            printf(",\"failed\":{\"line\":%u", r->failed->line);
+            cli_json_member(stdout, "path", r->failed->path);
+            dump_json_value(stdout, "value", r->failed->value, strlen(r->failed->value));
+            cli_json_member(stdout, "error", r->failure);
+            printf("},\"written_back\":%zu,\"rolled_back\":%s", r->written_back,
+                   r->rolled_back ? "true" : "false");
+        }
+        puts("}");
+    } else if (r->compared == r->file.count) {
+        printf("drive %u: %zu properties restored from %s, %s", r->id, r->written, r->name,
+               r->differences == 0 ? "each kept as written" : "");
+        if (r->differences > 0) {
+            printf("%zu kept otherwise (above)", r->differences);
+        }
+        printf("%s\n", saved_to_nvm ? "; saved (ss)" : "");
     }
-    /* From the first write to the last write-back, a Ctrl-C waits: cut
-     * short, it would leave the drive half-configured. */
+    fflush(stdout);
+}
+
+/* Write, compare and (--save) save, with Ctrl-C held back: cut short, a
+ * restore would leave the drive half-configured. */
+static cli_status_t restore_apply(cli_session_t *s, restore_t *r, bool save)
+{
     sigset_t block;
     sigset_t saved;
     sigemptyset(&block);
@@ -297,51 +333,41 @@ static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
     sigaddset(&block, SIGTERM);
     sigaddset(&block, SIGHUP);
     sigprocmask(SIG_BLOCK, &block, &saved);
-    r.written = 0;
-    r.compared = 0;
-    r.differences = 0;
-    r.failed = NULL;
-    r.written_back = 0;
-    r.rolled_back = false;
+    r->written = 0;
+    r->compared = 0;
+    r->differences = 0;
+    r->failed = NULL;
+    r->written_back = 0;
+    r->rolled_back = false;
     if (s->options.json) {
-        printf("{\"id\":%u", r.id);
-        cli_json_member(stdout, "file", r.name);
+        printf("{\"id\":%u", r->id);
+        cli_json_member(stdout, "file", r->name);
         fputs(",\"differences\":[", stdout);
     }
-    status = restore_write(s, &r);
+    cli_status_t status = restore_write(s, r);
     if (status == CLI_OK) {
-        status = restore_compare(s, &r);
+        status = restore_compare(s, r);
     }
     bool saved_to_nvm = false;
     if (status == CLI_OK && save) {
-        status = restore_save(s, r.id);
+        status = restore_save(s, r->id);
         saved_to_nvm = status == CLI_OK;
     }
-    if (s->options.json) {
-        printf("],\"lines\":%zu,\"written\":%zu,\"complete\":%s,\"compared\":%zu,"
-               "\"saved\":%s", r.file.count, r.written,
-               r.written == r.file.count ? "true" : "false", r.compared,
-               saved_to_nvm ? "true" : "false");
-        if (r.failed != NULL) {
-            printf(",\"failed\":{\"line\":%u", r.failed->line);
-            cli_json_member(stdout, "path", r.failed->path);
-            dump_json_value(stdout, "value", r.failed->value, strlen(r.failed->value));
-            cli_json_member(stdout, "error", r.failure);
-            printf("},\"written_back\":%zu,\"rolled_back\":%s", r.written_back,
-                   r.rolled_back ? "true" : "false");
-        }
-        puts("}");
-    } else if (r.compared == r.file.count) {
-        printf("drive %u: %zu properties restored from %s, %s", r.id, r.written, r.name,
-               r.differences == 0 ? "each kept as written" : "");
-        if (r.differences > 0) {
-            printf("%zu kept otherwise (above)", r.differences);
-        }
-        printf("%s\n", saved_to_nvm ? "; saved (ss)" : "");
-    }
-    fflush(stdout);
+    restore_print_outcome(s, r, saved_to_nvm);
     sigprocmask(SIG_SETMASK, &saved, NULL);
     return status;
+}
+
+static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
+{
+    static restore_t r; /* 60 KiB: kept off the stack */
+    bool save = false;
+    bool force = false;
+    cli_status_t status = restore_parse_args(argc, argv, &r, &save, &force);
+    if (status == CLI_OK) {
+        status = restore_prepare(s, &r, force);
+    }
+    return status == CLI_OK ? restore_apply(s, &r, save) : status;
 }
 
 const cli_command_t cli_cmd_restore = {
