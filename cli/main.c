@@ -28,7 +28,8 @@ static const char usage_head[] =
 static const char usage_tail[] =
     "\n"
     "Exit status: 0 done, 1 a drive answered an error (or refused a value),\n"
-    "2 usage, 3 no reply (or a damaged one), 4 port error. docs/cli.md has more.\n";
+    "2 usage, 3 no reply (or a damaged one), 4 port error, 5 a CAN gateway could\n"
+    "not send the request on its bus. docs/cli.md has more.\n";
 
 static void print_command_line(FILE *out, const cli_command_t *command)
 {

@@ -111,6 +111,11 @@ cli_status_t cli_status_of(daran_result_t result, bool drive_error)
     if (result == DARAN_ERR_NO_REPLY) {
         return CLI_NO_REPLY;
     }
+    /* A gateway's `error: bus error` (can.md C33): it could not put the
+     * request on its bus, so the drive behind it did not get it. */
+    if (result == DARAN_ERR_BUS_ERROR && drive_error) {
+        return CLI_GATEWAY_BUS_ERROR;
+    }
     if (drive_error) {
         return CLI_DRIVE_ERROR;
     }
@@ -202,6 +207,11 @@ cli_status_t cli_failure_text(cli_session_t *s, const daran_client_request_t *re
         break;
     case CLI_PORT_ERROR:
         (void)snprintf(buf, size, "%s: cannot write \"%s\"", s->port_path, text);
+        break;
+    case CLI_GATEWAY_BUS_ERROR:
+        (void)snprintf(buf, size, "drive %u did not get \"%s\": the gateway on %s answered "
+                       "\"error: %s\" (it could not send it on its CAN bus)", request->id, text,
+                       s->port_path, daran_result_phrase(DARAN_ERR_BUS_ERROR));
         break;
     default:
         (void)snprintf(buf, size, "cannot build the request \"%s\": %s", text,
