@@ -19,11 +19,14 @@
 /** The exit statuses (docs/cli.md, "Exit status"). */
 typedef enum cli_status {
     CLI_OK = 0,          /**< done */
-    CLI_DRIVE_ERROR = 1, /**< a drive answered `error: …` (not a gateway's `no reply`), or
-                              refused what was asked */
+    CLI_DRIVE_ERROR = 1, /**< a drive answered `error: …` (not a gateway's `no reply` or
+                              `bus error`), or refused what was asked */
     CLI_USAGE = 2,       /**< the command line is wrong */
     CLI_NO_REPLY = 3,    /**< no (readable) reply in time */
-    CLI_PORT_ERROR = 4   /**< the port could not be found, opened, read or written */
+    CLI_PORT_ERROR = 4,  /**< the port could not be found, opened, read or written */
+    CLI_GATEWAY_BUS_ERROR = 5 /**< a CAN gateway answered `error: bus error`: it could not
+                                   send the request on its bus, so the drive behind it
+                                   neither got nor refused it */
 } cli_status_t;
 
 /** The options every command shares. */
@@ -90,7 +93,8 @@ cli_status_t cli_transact(cli_session_t *s, const daran_client_request_t *reques
  * as one sentence in buf ("" for CLI_OK), for a caller that words its own
  * message around it; nothing is reported. Returns the status, which is
  * CLI_PORT_ERROR whenever the port failed. A gateway's `error: no reply` is
- * told as such, apart from the link's own timeout. */
+ * told as such, apart from the link's own timeout, and its `error: bus
+ * error` as a request the drive did not get. */
 cli_status_t cli_failure_text(cli_session_t *s, const daran_client_request_t *request,
                               cli_status_t status, daran_result_t result, char *buf, size_t size);
 
@@ -101,18 +105,9 @@ cli_status_t cli_transact_failed(cli_session_t *s, const daran_client_request_t 
 
 /** The exit status for a link result (`drive_error`: the drive sent it).
  * DARAN_ERR_NO_REPLY is CLI_NO_REPLY whoever said it: the link's timeout
- * or a gateway's `error: no reply` (the drive behind it did not answer). */
+ * or a gateway's `error: no reply` (the drive behind it did not answer).
+ * A gateway's `error: bus error` is CLI_GATEWAY_BUS_ERROR, never a refusal. */
 cli_status_t cli_status_of(daran_result_t result, bool drive_error);
-
-/** Print "daran: <message>" on stderr and return `status`. */
-cli_status_t cli_fail(cli_status_t status, const char *format, ...)
-    __attribute__((format(printf, 2, 3)));
-
-/** Catch SIGINT, SIGTERM and SIGHUP from now on, for a command that must
- * clean up (watch, shell): they set cli_interrupted() and end any wait. */
-void cli_catch_signals(void);
-/** A caught signal came. */
-bool cli_interrupted(void);
 
 /** The request as text (no checksum, no line end), for messages. */
 size_t cli_request_text(const daran_client_request_t *request, char *buf, size_t size);
@@ -124,7 +119,23 @@ cli_status_t cli_port_status(cli_session_t *s);
  * Returns early on a signal. */
 void cli_session_pump(cli_session_t *s, uint32_t ms);
 
-/** A millisecond clock (monotonic). */
+/* ------------------------------------------------------------ fail.c */
+
+/** Print "daran: <message>" on stderr and return `status`. */
+cli_status_t cli_fail(cli_status_t status, const char *format, ...)
+    __attribute__((format(printf, 2, 3)));
+
+/* ------------------------------------------------------------ signals.c */
+
+/** Catch SIGINT, SIGTERM and SIGHUP from now on, for a command that must
+ * clean up (watch, shell): they set cli_interrupted() and end any wait. */
+void cli_catch_signals(void);
+/** A caught signal came. */
+bool cli_interrupted(void);
+
+/* ------------------------------------------------------------ serial.c */
+
+/** A millisecond clock (monotonic): the link's, and every wait's. */
 uint32_t cli_now_ms(void);
 
 /* ------------------------------------------------------------ readback.c */
@@ -134,7 +145,8 @@ uint32_t cli_now_ms(void);
  * drive refused the write, *refused says why (nothing reported: the caller
  * words it; kept[] holds the value it still has when it could be read).
  * Other statuses are reported here; when the write went out and only its
- * read-back failed, the message says the write may have taken effect. */
+ * read-back failed, the message says the write may have taken effect, and
+ * when a gateway could not send the write, that the drive did not get it. */
 cli_status_t cli_write_read_back(cli_session_t *s, uint8_t id, const char *path,
                                  const daran_client_value_t *value, char *kept, size_t kept_size,
                                  daran_result_t *refused);
@@ -144,15 +156,18 @@ typedef struct cli_read_back {
     char kept[DARAN_CLIENT_LINE_MAX]; /**< the value read back; "" when none could be read */
     daran_result_t refused;           /**< CLI_DRIVE_ERROR: the drive's answer to the write */
     daran_result_t result;            /**< any other status: the link's result of the request
-                                           that failed (DARAN_ERR_NO_REPLY, a damaged reply's) */
+                                           that failed (DARAN_ERR_NO_REPLY, a damaged reply's,
+                                           a gateway's DARAN_ERR_BUS_ERROR) */
+    bool may_have_taken_effect;       /**< the write went out and was not refused: it took
+                                           effect (CLI_OK) or may have; false: it had none
+                                           (refused, or a gateway could not send it) */
     char failure[CLI_FAILURE_MAX];    /**< any other status: what happened (nothing reported) */
 } cli_read_back_t;
 
 /** cli_write_read_back() with the scope given (a drive's own system-scope
  * row, which the tool's table does not know, needs SYSTEM), reporting
- * nothing: the status, and *out says what happened. A failure other than a
- * refusal (CLI_NO_REPLY after the write went out) means the write may have
- * taken effect. */
+ * nothing: the status, and *out says what happened, and whether the write
+ * may have taken effect. */
 cli_status_t cli_write_read_back_scoped(cli_session_t *s, uint8_t id, const char *path,
                                         daran_client_scope_t scope,
                                         const daran_client_value_t *value, cli_read_back_t *out);

@@ -73,6 +73,7 @@ static cli_status_t run_scan(cli_session_t *s, int argc, char **argv)
 static cli_status_t scan_ids(cli_session_t *s, uint8_t first, uint8_t last)
 {
     size_t found = 0;
+    cli_status_t stopped = CLI_OK;
     if (s->options.json) {
         fputs("{\"drives\":[", stdout);
     }
@@ -81,8 +82,12 @@ static cli_status_t scan_ids(cli_session_t *s, uint8_t first, uint8_t last)
         daran_client_request_t request = {.command = DARAN_CLIENT_CMD_I, .id = (uint8_t)id};
         daran_result_t result;
         cli_status_t one = cli_transact(s, &request, take_version, &v, true, &result);
-        if (one == CLI_PORT_ERROR) {
-            return cli_transact_failed(s, &request, one, result);
+        if (one == CLI_PORT_ERROR || one == CLI_GATEWAY_BUS_ERROR) {
+            /* the port, or the gateway's bus, is down: the next ids would fail alike */
+            char why[CLI_FAILURE_MAX];
+            stopped = cli_failure_text(s, &request, one, result, why, sizeof why);
+            stopped = cli_fail(stopped, "%s; scan stopped at id %u", why, id);
+            break;
         }
         if (one == CLI_NO_REPLY && result == DARAN_ERR_NO_REPLY) {
             continue; /* nobody there */
@@ -116,8 +121,11 @@ static cli_status_t scan_ids(cli_session_t *s, uint8_t first, uint8_t last)
         printf("],\"port\":");
         cli_json_string(stdout, s->port_path, strlen(s->port_path));
         puts("}");
-    } else if (found == 0) {
+    } else if (found == 0 && stopped == CLI_OK) {
         printf("no drive answered on %s (ids %u..%u)\n", s->port_path, first, last);
+    }
+    if (stopped != CLI_OK) {
+        return stopped;
     }
     if (cli_interrupted()) {
         return cli_fail(CLI_NO_REPLY, "scan interrupted");
@@ -359,9 +367,9 @@ static cli_status_t send_one(cli_session_t *s, const char *text, size_t len, siz
     if (s->options.json) {
         putchar(']');
         if (status != CLI_OK) {
-            const char *what = status == CLI_DRIVE_ERROR ? daran_result_phrase(result)
-                               : result == DARAN_ERR_NO_REPLY ? "no reply"
-                                                              : "damaged reply";
+            const char *what = outcome.drive_error || result == DARAN_ERR_NO_REPLY
+                                   ? daran_result_phrase(result)
+                                   : "damaged reply";
             cli_json_member(stdout, "error", what);
         }
         putchar('}');
@@ -376,6 +384,10 @@ static cli_status_t send_one(cli_session_t *s, const char *text, size_t len, siz
                         daran_result_phrase(result));
     case CLI_PORT_ERROR:
         return s->port_failed ? cli_port_status(s) : cli_fail(status, "%s: cannot write", s->port_path);
+    case CLI_GATEWAY_BUS_ERROR:
+        return cli_fail(status, "\"%.*s\": not sent: the gateway on %s answered \"error: %s\" "
+                        "(it could not send it, or all of it, on its CAN bus)", (int)len, text,
+                        s->port_path, daran_result_phrase(result));
     case CLI_NO_REPLY:
         if (result == DARAN_ERR_NO_REPLY && outcome.drive_error) {
             return cli_fail(status, "\"%.*s\": no reply: the gateway on %s answered \"error: no "

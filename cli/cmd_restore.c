@@ -1,8 +1,8 @@
 /* restore (docs/cli.md, "dump, restore"): a dump written back into a
- * drive, all or nothing. A line the drive refuses, or one whose read-back
- * goes unanswered (it may have taken effect), stops the restore and the
- * drive's previous values are written back; "back" is said only of values
- * read again as they were. */
+ * drive, all or nothing. A line the drive refuses, one a gateway could not
+ * send, or one whose read-back goes unanswered (it may have taken effect),
+ * stops the restore and the drive's previous values are written back;
+ * "back" is said only of values read again as they were. */
 #include <signal.h>
 #include <string.h>
 
@@ -19,7 +19,8 @@ typedef struct restore {
     size_t compared;     /* entries read again once all were written */
     size_t differences;  /* written values the drive kept otherwise */
     const dump_entry_t *failed; /* the line that stopped the restore; NULL: none */
-    const char *failure;        /* the drive's refusal, or "no reply" / "damaged reply" */
+    const char *failure;        /* the drive's refusal, or "no reply" / "bus error" /
+                                   "damaged reply" */
     size_t written_back; /* lines written back after it, each read back as it was */
     bool rolled_back;    /* every changed line written back, then all read again as they were */
 } restore_t;
@@ -113,8 +114,29 @@ static void print_difference(const cli_session_t *s, const restore_t *r, const d
     }
 }
 
-/* Write every line; at the first one the drive refuses, or whose read-back
- * goes unanswered, write back what may have changed. */
+/* What stopped the restore at entry e, as the message and JSON say it. */
+static void describe_failure(restore_t *r, const dump_entry_t *e, cli_status_t status,
+                             const cli_read_back_t *back, char *what, size_t size)
+{
+    r->failed = e;
+    if (status != CLI_DRIVE_ERROR) {
+        (void)snprintf(what, size, "%s", back->failure);
+        r->failure = back->result == DARAN_ERR_NO_REPLY || back->result == DARAN_ERR_BUS_ERROR
+                         ? daran_result_phrase(back->result)
+                         : "damaged reply";
+        return;
+    }
+    char line[DARAN_CLIENT_LINE_MAX];
+    dump_write_line(line, sizeof line, r->id, e->path, e->value);
+    (void)snprintf(what, size, "drive %u refused `%s`: %s%s%s%s", r->id, line,
+                   daran_result_phrase(back->refused), back->kept[0] != '\0' ? " (it keeps " : "",
+                   back->kept, back->kept[0] != '\0' ? ")" : "");
+    r->failure = daran_result_phrase(back->refused);
+}
+
+/* Write every line; at the first one that fails, write back what may have
+ * changed: the lines before it, and that one too unless it had no effect
+ * (refused, or never sent: a gateway's bus error). */
 static cli_status_t restore_write(cli_session_t *s, restore_t *r)
 {
     cli_read_back_t back;
@@ -126,29 +148,13 @@ static cli_status_t restore_write(cli_session_t *s, restore_t *r)
             r->written++; /* what it kept is compared once all are written */
             continue;
         }
-        if (status == CLI_PORT_ERROR) {
+        if (s->port_failed) {
             return cli_fail(status, "%s; drive %u may be half-restored: %zu of %zu lines written",
                             back.failure, r->id, r->written, r->file.count);
         }
-        /* A refused line had no effect; one whose read-back got no (readable)
-         * answer went out and may have taken effect: it is written back too. */
-        bool refused = status == CLI_DRIVE_ERROR;
-        size_t changed = refused ? i : i + 1;
+        size_t changed = back.may_have_taken_effect ? i + 1 : i;
         char what[CLI_FAILURE_MAX];
-        if (refused) {
-            char line[DARAN_CLIENT_LINE_MAX];
-            dump_write_line(line, sizeof line, r->id, e->path, e->value);
-            (void)snprintf(what, sizeof what, "drive %u refused `%s`: %s%s%s%s", r->id, line,
-                           daran_result_phrase(back.refused), back.kept[0] != '\0' ? " (it keeps "
-                                                                                    : "",
-                           back.kept, back.kept[0] != '\0' ? ")" : "");
-        } else {
-            (void)snprintf(what, sizeof what, "%s", back.failure);
-        }
-        r->failed = e;
-        r->failure = refused ? daran_result_phrase(back.refused)
-                     : back.result == DARAN_ERR_NO_REPLY ? "no reply"
-                                                         : "damaged reply";
+        describe_failure(r, e, status, &back, what, sizeof what);
         char why[2 * CLI_FAILURE_MAX];
         cli_status_t undone = restore_roll_back(s, r, changed, why, sizeof why);
         r->rolled_back = undone == CLI_OK;
@@ -158,8 +164,8 @@ static cli_status_t restore_write(cli_session_t *s, restore_t *r)
         }
         return cli_fail(status, "%s:%u: %s; drive %u's previous values are back%s (%zu line%s "
                         "written back, then all read again as they were)", r->name, e->line,
-                        what, r->id, refused ? "" : ", that line's too", changed,
-                        changed == 1 ? "" : "s");
+                        what, r->id, back.may_have_taken_effect ? ", that line's too" : "",
+                        changed, changed == 1 ? "" : "s");
     }
     return CLI_OK;
 }
@@ -238,26 +244,26 @@ static cli_status_t restore_save(cli_session_t *s, uint8_t id)
     daran_client_request_t request = {.command = DARAN_CLIENT_CMD_SS, .id = id};
     return cli_transact(s, &request, NULL, NULL, false, NULL);
 }
-static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
+
+/* The arguments: ID FILE [--save] [--force]. */
+static cli_status_t restore_parse_args(int argc, char **argv, restore_t *r, bool *save,
+                                       bool *force)
 {
-    static restore_t r; /* 60 KiB: kept off the stack */
-    bool save = false;
-    bool force = false;
     int positional = 0;
     for (int i = 0; i < argc; i++) {
         if (strcmp(argv[i], "--save") == 0) {
-            save = true;
+            *save = true;
         } else if (strcmp(argv[i], "--force") == 0) {
-            force = true;
+            *force = true;
         } else if (strncmp(argv[i], "--", 2) == 0) {
             return cli_usage(&cli_cmd_restore, "no option %s", argv[i]);
         } else if (positional == 0) {
-            if (!cli_parse_id(argv[i], false, &r.id)) {
+            if (!cli_parse_id(argv[i], false, &r->id)) {
                 return cli_usage(&cli_cmd_restore, "\"%s\" is not a motor id (1..63)", argv[i]);
             }
             positional++;
         } else if (positional == 1) {
-            r.name = argv[i];
+            r->name = argv[i];
             positional++;
         } else {
             return cli_usage(&cli_cmd_restore, "one drive and one file (\"%s\" too many)",
@@ -267,29 +273,65 @@ static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
     if (positional != 2) {
         return cli_usage(&cli_cmd_restore, "a drive id and a file are needed");
     }
-    cli_status_t status = dump_file_read(r.name, r.id, &r.file);
+    return CLI_OK;
+}
+
+/* Everything before the first write: the file, the drive's firmware and
+ * what it holds now. */
+static cli_status_t restore_prepare(cli_session_t *s, restore_t *r, bool force)
+{
+    cli_status_t status = dump_file_read(r->name, r->id, &r->file);
     if (status != CLI_OK) {
         return status;
     }
-    if (r.file.count == 0) {
-        return cli_fail(CLI_USAGE, "%s: no `w` line to restore", r.name);
+    if (r->file.count == 0) {
+        return cli_fail(CLI_USAGE, "%s: no `w` line to restore", r->name);
     }
-    if (r.file.firmware[0] == '\0' && !force) {
+    if (r->file.firmware[0] == '\0' && !force) {
         return cli_fail(CLI_USAGE, "%s names no firmware (no `" DUMP_FIRMWARE_HEAD "…` line); "
-                        "--force restores it anyway", r.name);
+                        "--force restores it anyway", r->name);
     }
     status = cli_session_connect(s);
     if (status == CLI_OK) {
-        status = restore_check_firmware(s, &r, force);
+        status = restore_check_firmware(s, r, force);
     }
     if (status == CLI_OK) {
-        status = restore_read_before(s, &r);
+        status = restore_read_before(s, r);
     }
-    if (status != CLI_OK) {
-        return status;
+    return status;
+}
+
+static void restore_print_outcome(const cli_session_t *s, const restore_t *r, bool saved_to_nvm)
+{
+    if (s->options.json) {
+        printf("],\"lines\":%zu,\"written\":%zu,\"complete\":%s,\"compared\":%zu,"
+               "\"saved\":%s", r->file.count, r->written,
+               r->written == r->file.count ? "true" : "false", r->compared,
+               saved_to_nvm ? "true" : "false");
+        if (r->failed != NULL) {
+            printf(",\"failed\":{\"line\":%u", r->failed->line);
+            cli_json_member(stdout, "path", r->failed->path);
+            dump_json_value(stdout, "value", r->failed->value, strlen(r->failed->value));
+            cli_json_member(stdout, "error", r->failure);
+            printf("},\"written_back\":%zu,\"rolled_back\":%s", r->written_back,
+                   r->rolled_back ? "true" : "false");
+        }
+        puts("}");
+    } else if (r->compared == r->file.count) {
+        printf("drive %u: %zu properties restored from %s, %s", r->id, r->written, r->name,
+               r->differences == 0 ? "each kept as written" : "");
+        if (r->differences > 0) {
+            printf("%zu kept otherwise (above)", r->differences);
+        }
+        printf("%s\n", saved_to_nvm ? "; saved (ss)" : "");
     }
-    /* From the first write to the last write-back, a Ctrl-C waits: cut
-     * short, it would leave the drive half-configured. */
+    fflush(stdout);
+}
+
+/* Write, compare and (--save) save, with Ctrl-C held back: cut short, a
+ * restore would leave the drive half-configured. */
+static cli_status_t restore_apply(cli_session_t *s, restore_t *r, bool save)
+{
     sigset_t block;
     sigset_t saved;
     sigemptyset(&block);
@@ -297,51 +339,41 @@ static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
     sigaddset(&block, SIGTERM);
     sigaddset(&block, SIGHUP);
     sigprocmask(SIG_BLOCK, &block, &saved);
-    r.written = 0;
-    r.compared = 0;
-    r.differences = 0;
-    r.failed = NULL;
-    r.written_back = 0;
-    r.rolled_back = false;
+    r->written = 0;
+    r->compared = 0;
+    r->differences = 0;
+    r->failed = NULL;
+    r->written_back = 0;
+    r->rolled_back = false;
     if (s->options.json) {
-        printf("{\"id\":%u", r.id);
-        cli_json_member(stdout, "file", r.name);
+        printf("{\"id\":%u", r->id);
+        cli_json_member(stdout, "file", r->name);
         fputs(",\"differences\":[", stdout);
     }
-    status = restore_write(s, &r);
+    cli_status_t status = restore_write(s, r);
     if (status == CLI_OK) {
-        status = restore_compare(s, &r);
+        status = restore_compare(s, r);
     }
     bool saved_to_nvm = false;
     if (status == CLI_OK && save) {
-        status = restore_save(s, r.id);
+        status = restore_save(s, r->id);
         saved_to_nvm = status == CLI_OK;
     }
-    if (s->options.json) {
-        printf("],\"lines\":%zu,\"written\":%zu,\"complete\":%s,\"compared\":%zu,"
-               "\"saved\":%s", r.file.count, r.written,
-               r.written == r.file.count ? "true" : "false", r.compared,
-               saved_to_nvm ? "true" : "false");
-        if (r.failed != NULL) {
-            printf(",\"failed\":{\"line\":%u", r.failed->line);
-            cli_json_member(stdout, "path", r.failed->path);
-            dump_json_value(stdout, "value", r.failed->value, strlen(r.failed->value));
-            cli_json_member(stdout, "error", r.failure);
-            printf("},\"written_back\":%zu,\"rolled_back\":%s", r.written_back,
-                   r.rolled_back ? "true" : "false");
-        }
-        puts("}");
-    } else if (r.compared == r.file.count) {
-        printf("drive %u: %zu properties restored from %s, %s", r.id, r.written, r.name,
-               r.differences == 0 ? "each kept as written" : "");
-        if (r.differences > 0) {
-            printf("%zu kept otherwise (above)", r.differences);
-        }
-        printf("%s\n", saved_to_nvm ? "; saved (ss)" : "");
-    }
-    fflush(stdout);
+    restore_print_outcome(s, r, saved_to_nvm);
     sigprocmask(SIG_SETMASK, &saved, NULL);
     return status;
+}
+
+static cli_status_t run_restore(cli_session_t *s, int argc, char **argv)
+{
+    static restore_t r; /* 60 KiB: kept off the stack */
+    bool save = false;
+    bool force = false;
+    cli_status_t status = restore_parse_args(argc, argv, &r, &save, &force);
+    if (status == CLI_OK) {
+        status = restore_prepare(s, &r, force);
+    }
+    return status == CLI_OK ? restore_apply(s, &r, save) : status;
 }
 
 const cli_command_t cli_cmd_restore = {
@@ -352,10 +384,11 @@ const cli_command_t cli_cmd_restore = {
             "is not the drive's (unless --force), reads every value the drive has, then\n"
             "writes each line to drive ID (its id or axisN replaced by ID) and reads it back,\n"
             "printing each value the drive kept otherwise. At the first line the drive\n"
-            "refuses (exit status 1), or whose read-back gets no answer (exit status 3:\n"
-            "that line may have taken effect), it writes back the values it had changed,\n"
-            "that line's too when unanswered, reads them all again and stops; it says\n"
-            "\"back\" only when every one reads as it was.\n"
+            "refuses (exit status 1), that a CAN gateway could not send (exit status 5),\n"
+            "or whose read-back gets no answer (exit status 3, or 5 when the gateway could\n"
+            "not send the read-back: that line may have taken effect), it writes back the\n"
+            "values it had changed, that line's too when it may have, reads them all again\n"
+            "and stops; it says \"back\" only when every one reads as it was.\n"
             "A line that would change the node id, a setpoint, the drive's state, an error\n"
             "register, the shaft's zero or telemetry.period is a format error (exit 2):\n"
             "a restore never writes them. --save: `ss ID` after a complete restore.\n",

@@ -20,7 +20,7 @@
 
 static void print_help(const char *topic)
 {
-    const cli_command_t *command = topic[0] != '\0' ? cli_command_find(topic) : NULL;
+    const cli_command_t *command = topic[0] != '\0' ? cli_command_or_shell(topic) : NULL;
     if (command != NULL) {
         printf("%s %s\n%s\n", command->name, command->synopsis, command->summary);
         if (command->help != NULL) {
@@ -36,9 +36,7 @@ static void print_help(const char *topic)
     size_t count;
     const cli_command_t *const *commands = cli_commands(&count);
     for (size_t i = 0; i < count; i++) {
-        if (commands[i] != &cli_cmd_shell) {
-            printf("  %-8s %s\n", commands[i]->name, commands[i]->summary);
-        }
+        printf("  %-8s %s\n", commands[i]->name, commands[i]->summary);
     }
     printf("or a protocol line, sent as it is (`f 1`, `t 1 90`, `r axis1.output_shaft.vel_limit`),\n"
            "its reply printed; the protocol's words:\n ");
@@ -253,11 +251,11 @@ static line_outcome_t run_line(shell_t *sh, char *line)
         print_help(line + word_len + strspn(line + word_len, " \t"));
         return LINE_DONE;
     }
-    const cli_command_t *command = cli_command_find(word);
-    if (command == &cli_cmd_shell) {
+    if (strcmp(word, cli_cmd_shell.name) == 0) {
         cli_fail(CLI_USAGE, "shell: this is the shell already");
         return LINE_DONE;
     }
+    const cli_command_t *command = cli_command_find(word);
     if (command != NULL) {
         return run_tool_line(sh, command, line) ? LINE_DONE : LINE_PORT_LOST;
     }
@@ -320,6 +318,11 @@ static cli_status_t run_shell(cli_session_t *s, int argc, char **argv)
     s->on_stray = NULL;
     free(sh);
     return status;
+}
+
+const cli_command_t *cli_command_or_shell(const char *name)
+{
+    return strcmp(name, cli_cmd_shell.name) == 0 ? &cli_cmd_shell : cli_command_find(name);
 }
 
 const cli_command_t cli_cmd_shell = {

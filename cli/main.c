@@ -1,7 +1,6 @@
 /* daran: the command line (docs/cli.md). The options every command shares
  * may stand anywhere before `--`; the rest is the command and its own
  * arguments. */
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -29,52 +28,29 @@ static const char usage_head[] =
 static const char usage_tail[] =
     "\n"
     "Exit status: 0 done, 1 a drive answered an error (or refused a value),\n"
-    "2 usage, 3 no reply (or a damaged one), 4 port error. docs/cli.md has more.\n";
+    "2 usage, 3 no reply (or a damaged one), 4 port error, 5 a CAN gateway could\n"
+    "not send the request on its bus. docs/cli.md has more.\n";
 
-static const cli_command_t *const commands[] = {
-    &cli_cmd_scan, &cli_cmd_get,  &cli_cmd_set,     &cli_cmd_send,  &cli_cmd_errors,
-    &cli_cmd_clear, &cli_cmd_dump, &cli_cmd_restore, &cli_cmd_watch, &cli_cmd_shell,
-};
-
-const cli_command_t *const *cli_commands(size_t *count)
+static void print_command_line(FILE *out, const cli_command_t *command)
 {
-    *count = sizeof commands / sizeof commands[0];
-    return commands;
-}
-
-const cli_command_t *cli_command_find(const char *name)
-{
-    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
-        if (strcmp(commands[i]->name, name) == 0) {
-            return commands[i];
-        }
+    char head[256];
+    (void)snprintf(head, sizeof head, "%s %s", command->name, command->synopsis);
+    if (strlen(head) > 40) { /* a long synopsis whole on its line, the summary below */
+        fprintf(out, "  %s\n  %-40s %s\n", head, "", command->summary);
+    } else {
+        fprintf(out, "  %-40s %s\n", head, command->summary);
     }
-    return NULL;
-}
-
-cli_status_t cli_usage(const cli_command_t *command, const char *format, ...)
-{
-    va_list args;
-    va_start(args, format);
-    fprintf(stderr, "daran: %s: ", command->name);
-    vfprintf(stderr, format, args);
-    fprintf(stderr, " (usage: daran %s %s)\n", command->name, command->synopsis);
-    va_end(args);
-    return CLI_USAGE;
 }
 
 static void print_usage(FILE *out)
 {
     fputs(usage_head, out);
-    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
-        char head[256];
-        (void)snprintf(head, sizeof head, "%s %s", commands[i]->name, commands[i]->synopsis);
-        if (strlen(head) > 40) { /* a long synopsis whole on its line, the summary below */
-            fprintf(out, "  %s\n  %-40s %s\n", head, "", commands[i]->summary);
-        } else {
-            fprintf(out, "  %-40s %s\n", head, commands[i]->summary);
-        }
+    size_t count;
+    const cli_command_t *const *tools = cli_commands(&count);
+    for (size_t i = 0; i < count; i++) {
+        print_command_line(out, tools[i]);
     }
+    print_command_line(out, &cli_cmd_shell);
     fputs(usage_tail, out);
 }
 
@@ -160,10 +136,10 @@ int main(int argc, char **argv)
         print_usage(help ? stdout : stderr);
         return help ? CLI_OK : CLI_USAGE;
     }
-    const cli_command_t *command = cli_command_find(argv[1]);
+    const cli_command_t *command = cli_command_or_shell(argv[1]);
     if (command == NULL) {
         if (strcmp(argv[1], "help") == 0) {
-            command = argc > 2 ? cli_command_find(argv[2]) : NULL;
+            command = argc > 2 ? cli_command_or_shell(argv[2]) : NULL;
             if (command == NULL) {
                 print_usage(stdout);
             } else {

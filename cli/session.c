@@ -1,50 +1,12 @@
 /* A session: the port, the link over it, and the one place where a link
  * result becomes an exit status and a message (cli.h). */
 #include <errno.h>
-#include <signal.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "cli.h"
 #include "serial.h"
-
-static volatile sig_atomic_t interrupted;
-
-static void on_signal(int signo)
-{
-    (void)signo;
-    interrupted = 1;
-}
-
-bool cli_interrupted(void)
-{
-    return interrupted != 0;
-}
-
-void cli_catch_signals(void)
-{
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = 0; /* no SA_RESTART: a waiting poll() returns at once */
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
-}
-
-cli_status_t cli_fail(cli_status_t status, const char *format, ...)
-{
-    va_list args;
-    va_start(args, format);
-    fputs("daran: ", stderr);
-    vfprintf(stderr, format, args);
-    fputc('\n', stderr);
-    va_end(args);
-    return status;
-}
 
 static void session_report(void *ctx, const daran_client_report_t *report)
 {
@@ -149,6 +111,11 @@ cli_status_t cli_status_of(daran_result_t result, bool drive_error)
     if (result == DARAN_ERR_NO_REPLY) {
         return CLI_NO_REPLY;
     }
+    /* A gateway's `error: bus error` (can.md C33): it could not put the
+     * request on its bus, so the drive behind it did not get it. */
+    if (result == DARAN_ERR_BUS_ERROR && drive_error) {
+        return CLI_GATEWAY_BUS_ERROR;
+    }
     if (drive_error) {
         return CLI_DRIVE_ERROR;
     }
@@ -240,6 +207,11 @@ cli_status_t cli_failure_text(cli_session_t *s, const daran_client_request_t *re
         break;
     case CLI_PORT_ERROR:
         (void)snprintf(buf, size, "%s: cannot write \"%s\"", s->port_path, text);
+        break;
+    case CLI_GATEWAY_BUS_ERROR:
+        (void)snprintf(buf, size, "drive %u did not get \"%s\": the gateway on %s answered "
+                       "\"error: %s\" (it could not send it on its CAN bus)", request->id, text,
+                       s->port_path, daran_result_phrase(DARAN_ERR_BUS_ERROR));
         break;
     default:
         (void)snprintf(buf, size, "cannot build the request \"%s\": %s", text,

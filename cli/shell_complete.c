@@ -54,7 +54,7 @@ size_t shell_command_words(const char **out, size_t max)
     size_t tools;
     const cli_command_t *const *commands = cli_commands(&tools);
     for (size_t i = 0; i < tools; i++) {
-        if (commands[i] != &cli_cmd_shell && count < max) {
+        if (count < max) {
             out[count++] = commands[i]->name;
         }
     }

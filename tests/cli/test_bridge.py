@@ -3,14 +3,19 @@ the lines for drives 2 and 3 (docs/cli.md). The gateway answers a query
 whose drive stays silent with `error: no reply` (docs/can.md C32): that is
 no reply (exit status 3), never a refusal, for every command; a `w` whose
 read-back gets it went out and may have taken effect, so `restore` writes it
-back too, and says "back" only of values read again as they were. Faults
-come at an exact request: a proxy between daran and the simulator injects
-`!fault 3 can-lose N` (drive 3's next N frames are lost) just before it
-passes that request on."""
+back too, and says "back" only of values read again as they were. A frame
+the gateway cannot put on its bus is answered `error: bus error` (C33): the
+drive did not get that line, so it is neither a refusal nor a reply (exit
+status 5); a `w` the gateway could not send had no effect, one whose
+read-back it could not send went out and may have. Faults come at an exact
+request: a proxy between daran and the simulator injects `!fault 3 can-lose
+N` (drive 3's next N frames are lost) or `!fault 1 can-bus-off` (the
+gateway's controller leaves the bus) just before it passes that request on."""
 import json
 import os
 import sys
 import tempfile
+import time
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -68,7 +73,7 @@ class Bridge(unittest.TestCase):
 
     def tearDown(self):
         self.proxy.before_line(None, None)
-        self.sim.directive_taken("!fault 3 can-recover")
+        self.sim.directive_taken("!fault 0 can-recover")  # every node's faults, the bus's
 
     def values_before(self):
         """Drive 3 as it was at the start (the file's changes not in it)."""
@@ -99,6 +104,115 @@ class Bridge(unittest.TestCase):
                 seen[0] += 1
             return seen[0] == n and line.startswith(prefix)
         return matches
+
+    def bus_off_before(self, matches, recover_before=None, settle=0.0):
+        """The gateway's controller goes bus-off just before daran's first
+        line for which matches(line) holds reaches the simulator, `settle`
+        seconds after the lines before it did (their frames on the bus);
+        with recover_before, it is back on the bus just before the first
+        line after that for which recover_before(line) holds."""
+        def fault():
+            time.sleep(settle)
+            self.sim.directive_taken("!fault 1 can-bus-off")
+            if recover_before is not None:
+                self.proxy.before_line(
+                    recover_before, lambda: self.sim.directive_taken("!fault 1 can-recover"))
+        self.proxy.before_line(matches, fault)
+
+    def not_sent(self, line, drive=3):
+        return ('drive %d did not get "%s": the gateway on %s answered "error: bus error" (it '
+                'could not send it on its CAN bus)' % (drive, line, self.port))
+
+    def test_bus_error_is_neither_a_refusal_nor_a_reply(self):
+        path = "output_shaft.homing_vel_limit"
+        held = self.values_of(path)
+        other = str(int(float(held)) + 11)
+        # the gateway's controller off the bus, then the whole bus down
+        for fault in ("!fault 1 can-bus-off", "!fault 0 can-bus-off"):
+            self.sim.directive_taken(fault)
+            for args, line in ((["get", 3, path], "r axis3." + path), (["errors", 3], "e 3"),
+                               (["dump", 3], "i 3"),
+                               (["set", 3, path, other], "w axis3.%s %s" % (path, other))):
+                r = daran(self.port, *args)
+                self.assertEqual(r.returncode, 5, (fault, args, r.stderr))
+                self.assertEqual(r.stderr, "daran: %s\n" % self.not_sent(line), (fault, args))
+            self.sim.directive_taken("!fault 0 can-recover")
+            self.assertEqual(self.values_of(path), held)  # the write never reached it
+        self.sim.directive_taken("!fault 1 can-bus-off")
+        r = daran(self.port, "--json", "get", 3, path)
+        self.assertEqual((r.returncode, json.loads(r.stdout)), (5, {"id": 3, "properties": []}))
+        r = daran(self.port, "send", "r axis3." + path)
+        self.assertEqual((r.returncode, r.stdout), (5, "error: bus error\n"), r.stderr)
+        self.assertIn('"r axis3.%s": not sent: the gateway on %s answered "error: bus error"'
+                      % (path, self.port), r.stderr)
+        self.assertNotIn("drive answered", r.stderr)
+        # drive 1 answers itself; drive 2 was not asked, nor any after it
+        r = daran(self.port, "scan", "1-4")
+        self.assertEqual(r.returncode, 5, r.stderr)
+        self.assertEqual([l.split(":")[0] for l in r.stdout.splitlines()], ["drive 1"])
+        self.assertEqual(r.stderr, "daran: %s; scan stopped at id 2\n" % self.not_sent("i 2", drive=2))
+        r = daran(self.port, "--json", "scan", "1-4")
+        self.assertEqual(r.returncode, 5, r.stderr)
+        self.assertEqual([d["id"] for d in json.loads(r.stdout)["drives"]], [1])
+
+    def values_of(self, path):
+        got = daran(self.port, "get", 3, path)
+        self.assertEqual(got.returncode, 0, got.stderr)
+        return got.stdout.split()[1]
+
+    def test_restore_line_the_gateway_could_not_send_had_no_effect(self):
+        before = self.values_before()
+        # the last line's `w` and read-back cannot be sent; the bus is back
+        # for the write-backs
+        self.bus_off_before(lambda line: line.startswith("w axis3.%s " % CHANGED),
+                            recover_before=lambda line: line.startswith("w "))
+        r = daran(self.port, "--json", "restore", 3, self.file)
+        self.assertEqual(self.values(), before, r.stderr)
+        self.assertEqual(r.returncode, 5, r.stderr)
+        self.assertEqual(r.stderr, "daran: %s:%d: %s; drive 3's previous values are back (%d "
+                         "lines written back, then all read again as they were)\n" %
+                         (self.file, len(self.lines) + 1,
+                          self.not_sent("w axis3.%s 1" % CHANGED), len(self.lines) - 1))
+        doc = json.loads(r.stdout)
+        self.assertEqual((doc["complete"], doc["rolled_back"], doc["written_back"]),
+                         (False, True, len(self.lines) - 1))
+        self.assertEqual((doc["failed"]["path"], doc["failed"]["error"]),
+                         ("axis3." + CHANGED, "bus error"))
+
+    def test_restore_writes_back_a_line_whose_read_back_could_not_be_sent(self):
+        before = self.values_before()
+        # the last line's `w` goes out; its read-back (the second `r` of that
+        # path, after the one that reads what the drive had) cannot be sent
+        self.bus_off_before(self.nth("r axis3.%s" % CHANGED, 2), settle=0.1,
+                            recover_before=lambda line: line.startswith("w "))
+        r = daran(self.port, "--json", "restore", 3, self.file)
+        self.assertEqual(self.values(), before, r.stderr)  # the undo covers that line
+        self.assertEqual(r.returncode, 5, r.stderr)
+        self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+        self.assertIn(self.not_sent("r axis3." + CHANGED) + '; "w axis3.%s 1" went out '
+                      'before it and may have taken effect; drive 3\'s previous values are '
+                      'back, that line\'s too (%d lines written back' % (CHANGED, len(self.lines)),
+                      r.stderr)
+        doc = json.loads(r.stdout)
+        self.assertEqual((doc["rolled_back"], doc["written_back"], doc["failed"]["error"]),
+                         (True, len(self.lines), "bus error"))
+
+    def test_restore_never_says_back_while_the_gateway_cannot_send(self):
+        before = self.values_before()
+        self.bus_off_before(lambda line: line.startswith("w axis3.%s " % CHANGED))
+        r = daran(self.port, "--json", "restore", 3, self.file)
+        self.assertEqual(r.returncode, 5, r.stderr)
+        self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+        self.assertNotIn("back (", r.stderr)
+        self.assertNotIn("refused", r.stderr)
+        self.assertIn("drive 3 may be half-restored: 0 of %d lines written back, each read back "
+                      "as it was; then drive 3 did not get \"w %s " %
+                      (len(self.lines) - 1, self.paths[0]), r.stderr)
+        self.assertIn('the gateway on %s answered "error: bus error"' % self.port, r.stderr)
+        doc = json.loads(r.stdout)
+        self.assertEqual((doc["rolled_back"], doc["written_back"]), (False, 0))
+        self.sim.directive_taken("!fault 1 can-recover")
+        self.assertNotEqual(self.values(), before)  # as said: not back
 
     def test_no_reply_is_not_a_refusal(self):
         self.sim.directive_taken("!fault 3 can-mute")  # drive 3 obeys but sends nothing
