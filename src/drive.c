@@ -132,6 +132,96 @@ static daran_result_t own_id(daran_drive_t *drive, uint32_t *id)
     return result;
 }
 
+/* What the dispatcher needs of a line's command: the core's row or the
+ * port's command, its flags and its field counts, word included. */
+typedef struct command_of_line {
+    const daran_command_t *command; /* NULL for a port command */
+    const daran_port_command_t *port;
+    uint8_t flags;
+    uint8_t min_fields;
+    uint8_t max_fields;
+} command_of_line_t;
+
+/* The core's commands first, then the port's: a port cannot shadow one. */
+static bool find_command(const daran_drive_t *drive, const daran_field_t *word,
+                         command_of_line_t *found)
+{
+    found->command = daran_find_command(word);
+    found->port = NULL;
+    if (found->command != NULL) {
+        found->flags = found->command->flags;
+        found->min_fields = (uint8_t)DARAN_MIN_FIELDS(found->command);
+        found->max_fields = (uint8_t)DARAN_MAX_FIELDS(found->command);
+        return true;
+    }
+    found->port = daran_find_port_command(drive, word);
+    if (found->port == NULL) {
+        return false;
+    }
+    found->flags = (found->port->flags & DARAN_PORT_COMMAND_QUERY) != 0u ? DARAN_CMD_READ : 0u;
+    found->min_fields = (uint8_t)(2u + found->port->min_values);
+    found->max_fields = (uint8_t)(2u + found->port->max_values);
+    return true;
+}
+
+/* Where the id is: field 1; for r/w the N of `axisN.`, or the last field of
+ * a system path, absent meaning 0 (D8, D9). The property is looked up here
+ * but its error is reported after the id and the field count, in spec
+ * order (*property). */
+static daran_result_t address(const daran_line_t *line, const command_of_line_t *found,
+                              daran_request_t *request, bool *count_ok,
+                              daran_result_t *property)
+{
+    const daran_fields_t *fields = request->fields;
+    uint8_t count = fields->count;
+    *count_ok = count >= found->min_fields && count <= found->max_fields;
+    *property = DARAN_OK;
+    daran_field_t id = daran_field_of(line->text, fields, 1);
+    if ((found->flags & DARAN_CMD_PATH) != 0u) {
+        daran_field_t path = id;
+        daran_field_t name = path;
+        daran_scope_t scope = DARAN_SCOPE_SYSTEM;
+        if (split_axis_path(&path, &id, &name)) {
+            scope = DARAN_SCOPE_AXIS;
+            *count_ok = count == found->min_fields;
+        } else if (count == found->max_fields) {
+            id = daran_field_of(line->text, fields, count - 1u);
+        } else if (count == found->min_fields) {
+            id.text = NULL; /* no id: every drive */
+        } else {
+            return DARAN_ERR_INVALID_FORMAT;
+        }
+        *property = daran_find_property(scope, name.text, name.len, &request->prop);
+    }
+    return id.text != NULL ? daran_field_motor(&id, &request->motor) : DARAN_OK;
+}
+
+#if DARAN_ENABLE_CAN_BRIDGE
+/* A gateway's line for another drive, or its broadcast: checked like a line
+ * for this drive, then sent; a broadcast then runs here too (C31, C34). A
+ * port command has no CAN form: for another id it is not bridged, a
+ * broadcast one runs here alone. *done: nothing is left to do here. */
+static daran_result_t bridge_line(daran_drive_t *drive, const command_of_line_t *found,
+                                  const daran_request_t *request, bool count_ok,
+                                  daran_result_t property, bool elsewhere, bool *done)
+{
+    *done = true;
+    if (found->port != NULL) {
+        *done = elsewhere;
+        return elsewhere ? DARAN_ERR_NOT_BRIDGED : DARAN_OK;
+    }
+    if (!count_ok) {
+        return DARAN_ERR_INVALID_FORMAT;
+    }
+    if (property != DARAN_OK) {
+        return property;
+    }
+    daran_result_t result = daran_bridge_line(drive->bridge, request, !elsewhere);
+    *done = result != DARAN_OK || elsewhere;
+    return result;
+}
+#endif
+
 /* Steps 3 to 5 of the check order (spec section 8), then the handler. */
 static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
 {
@@ -142,79 +232,30 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
         return drive->reply_wants_checksum ? DARAN_ERR_UNKNOWN_COMMAND : DARAN_OK;
     }
     daran_field_t word = daran_field_of(line->text, fields, 0);
-    /* The core's commands first, then the port's: a port cannot shadow one. */
-    const daran_command_t *command = daran_find_command(&word);
-    const daran_port_command_t *port = NULL;
-    uint8_t flags;
-    unsigned min_fields;
-    unsigned max_fields;
-    if (command != NULL) {
-        flags = command->flags;
-        min_fields = DARAN_MIN_FIELDS(command);
-        max_fields = DARAN_MAX_FIELDS(command);
-    } else if ((port = daran_find_port_command(drive, &word)) != NULL) {
-        flags = (port->flags & DARAN_PORT_COMMAND_QUERY) != 0u ? DARAN_CMD_READ : 0u;
-        min_fields = 2u + port->min_values;
-        max_fields = 2u + port->max_values;
-    } else {
+    command_of_line_t found;
+    if (!find_command(drive, &word, &found)) {
         return DARAN_ERR_UNKNOWN_COMMAND;
     }
     if (count < 2u) {
         return DARAN_ERR_INVALID_FORMAT;
     }
-
-    /* Where the id is: field 1; for r/w the N of `axisN.`, or the last field
-     * of a system path, absent meaning 0 (D8, D9). The property is looked up
-     * here but reported after the id and the field count, in spec order. */
-    daran_request_t request = {command, line->text, fields, 0, DARAN_PROP_COUNT};
-    bool count_ok = count >= min_fields && count <= max_fields;
-    daran_result_t property = DARAN_OK;
-    daran_field_t id = daran_field_of(line->text, fields, 1);
-    if ((flags & DARAN_CMD_PATH) != 0u) {
-        daran_field_t path = id;
-        daran_field_t name = path;
-        daran_scope_t scope = DARAN_SCOPE_SYSTEM;
-        if (split_axis_path(&path, &id, &name)) {
-            scope = DARAN_SCOPE_AXIS;
-            count_ok = count == min_fields;
-        } else if (count == max_fields) {
-            id = daran_field_of(line->text, fields, count - 1u);
-        } else if (count == min_fields) {
-            id.text = NULL; /* no id: every drive */
-        } else {
-            return DARAN_ERR_INVALID_FORMAT;
-        }
-        property = daran_find_property(scope, name.text, name.len, &request.prop);
-    }
-    daran_result_t result;
-    if (id.text != NULL && (result = daran_field_motor(&id, &request.motor)) != DARAN_OK) {
-        return result;
-    }
-
+    daran_request_t request = {found.command, line->text, fields, 0, DARAN_PROP_COUNT};
+    bool count_ok;
+    daran_result_t property;
+    daran_result_t result = address(line, &found, &request, &count_ok, &property);
     uint32_t own;
-    result = own_id(drive, &own);
-    if (result != DARAN_OK) {
+    if (result != DARAN_OK || (result = own_id(drive, &own)) != DARAN_OK) {
         return result;
     }
     /* Another drive's line, or a broadcast that is not a read, goes to the
      * gateway too (D10); only the broadcast also runs here. */
     bool elsewhere = request.motor != 0u && request.motor != own;
-    bool broadcast = request.motor == 0u && (flags & DARAN_CMD_READ) == 0u;
+    bool broadcast = request.motor == 0u && (found.flags & DARAN_CMD_READ) == 0u;
 #if DARAN_ENABLE_CAN_BRIDGE
     if ((elsewhere || broadcast) && daran_bridge_active(drive)) {
-        /* Checked like a line for this drive, then sent; a broadcast then
-         * runs here too, below (C31, C34). A port command has no CAN form:
-         * for another id it is not bridged, a broadcast one runs here alone. */
-        if (port != NULL) {
-            if (elsewhere) {
-                return DARAN_ERR_NOT_BRIDGED;
-            }
-        } else if (!count_ok) {
-            return DARAN_ERR_INVALID_FORMAT;
-        } else if (property != DARAN_OK) {
-            return property;
-        } else if ((result = daran_bridge_line(drive->bridge, &request, broadcast)) != DARAN_OK ||
-                   elsewhere) {
+        bool done;
+        result = bridge_line(drive, &found, &request, count_ok, property, elsewhere, &done);
+        if (done) {
             return result;
         }
     } else
@@ -231,8 +272,8 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     if (property != DARAN_OK) {
         return property;
     }
-    if (port != NULL) {
-        return daran_from_hal(port->handler(drive, &request, drive->port_ctx));
+    if (found.port != NULL) {
+        return daran_from_hal(found.port->handler(drive, &request, drive->port_ctx));
     }
     return daran_run_command(drive, &request);
 }
