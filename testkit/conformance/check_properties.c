@@ -192,21 +192,51 @@ static bool word_is(const char *word, size_t len, const char *text)
     return strlen(text) == len && memcmp(word, text, len) == 0;
 }
 
-static void check_discovery(void)
+static const char *const type_names[] = {"f32", "u32", "s32", "u64", "bool"};
+
+/* One discovery line's type, access, unit and range (after its path, at
+ * *p) against the row of @p prop. A range discovery prints that differs from
+ * the list's is taken for the range checks of `w`, and noted. */
+static void check_discovery_row(daran_prop_t prop, const char *word, size_t len, const char *p,
+                                const char *eol)
 {
-    static const char *const type_names[] = {"f32", "u32", "s32", "u64", "bool"};
-    static bool listed[DARAN_PROP_COUNT];
-    char line[32];
-    memset(listed, 0, sizeof listed);
-    (void)snprintf(line, sizeof line, "h %u properties", CONF_ID);
-    if (!conf_begin(REQ_DISCOVERY, line)) {
-        conf_end();
+    conf_prop_t *row = &conf_props[prop];
+    const char *type;
+    size_t type_len = next_word(&p, eol, &type);
+    const char *access;
+    size_t access_len = next_word(&p, eol, &access);
+    const char *unit;
+    size_t unit_len = next_word(&p, eol, &unit);
+    const char *range;
+    size_t range_len = next_word(&p, eol, &range);
+    if (!word_is(type, type_len, type_names[row->type]) ||
+        !word_is(access, access_len, row->rw ? "rw" : "ro") ||
+        !word_is(unit, unit_len, row->unit[0] != '\0' ? row->unit : "-")) {
+        conf_fail("%s %s %s %s for %.*s, as its row says", row->path, type_names[row->type],
+                  row->rw ? "rw" : "ro", row->unit[0] != '\0' ? row->unit : "-", (int)len, word);
+    }
+    const char *want_range = row->rw ? row->range_text : "";
+    if (word_is(range, range_len, want_range)) {
         return;
     }
-    conf_send(line);
-    (void)conf_expect_no_effect();
-    const char *text = conf_reply();
-    const char *stop = text + conf_reply_len();
+    static char taken[DARAN_PROP_COUNT][64];
+    if (row->rw && range_len > 0u && range_len < sizeof taken[0]) {
+        memcpy(taken[prop], range, range_len);
+        taken[prop][range_len] = '\0';
+        conf_note("%.*s: discovery's range %s differs from the list's \"%s\"; checked with %s",
+                  (int)len, word, taken[prop], want_range, taken[prop]);
+        row->range_text = taken[prop];
+        conf_parse_range(row->range_text, &row->range);
+    } else {
+        conf_fail("the range \"%s\" for %.*s", want_range, (int)len, word);
+    }
+}
+
+/* The lines of `h id properties`: whole, each a path of the build's lists
+ * once with its row's attributes, then `end` and nothing after it. Marks
+ * each path listed. */
+static void check_discovery_lines(const char *text, const char *stop, bool *listed)
+{
     size_t end_len = strlen(line_end());
     bool ended = false;
     while (text < stop) {
@@ -222,57 +252,41 @@ static void check_discovery(void)
         const char *p = text;
         const char *word;
         size_t len = next_word(&p, eol, &word);
+        text = eol + end_len;
         if (word_is(word, len, "end") && p == eol) {
             ended = true;
-            text = eol + end_len;
             continue;
         }
         daran_prop_t prop = prop_of_path(word, len);
         if (prop == DARAN_PROP_COUNT) {
             conf_fail("only paths of the build's property lists; `%.*s` is none (is the program "
                       "built with the core's options header?)", (int)len, word);
-            text = eol + end_len;
             continue;
         }
-        conf_prop_t *row = &conf_props[prop];
-        if (row->presence != PRESENT_IN_BUILD || listed[prop]) {
+        if (conf_props[prop].presence != PRESENT_IN_BUILD || listed[prop]) {
             conf_fail("%.*s listed once, and only if `r` serves it", (int)len, word);
         }
         listed[prop] = true;
-        const char *type;
-        size_t type_len = next_word(&p, eol, &type);
-        const char *access;
-        size_t access_len = next_word(&p, eol, &access);
-        const char *unit;
-        size_t unit_len = next_word(&p, eol, &unit);
-        const char *range;
-        size_t range_len = next_word(&p, eol, &range);
-        if (!word_is(type, type_len, type_names[row->type]) ||
-            !word_is(access, access_len, row->rw ? "rw" : "ro") ||
-            !word_is(unit, unit_len, row->unit[0] != '\0' ? row->unit : "-")) {
-            conf_fail("%s %s %s %s for %.*s, as its row says", row->path, type_names[row->type],
-                      row->rw ? "rw" : "ro", row->unit[0] != '\0' ? row->unit : "-", (int)len, word);
-        }
-        /* `w` checks the range discovery prints: take it when the list's differs */
-        const char *want_range = row->rw ? row->range_text : "";
-        if (!word_is(range, range_len, want_range)) {
-            static char taken[DARAN_PROP_COUNT][64];
-            if (row->rw && range_len > 0u && range_len < sizeof taken[0]) {
-                memcpy(taken[prop], range, range_len);
-                taken[prop][range_len] = '\0';
-                conf_note("%.*s: discovery's range %s differs from the list's \"%s\"; checked with %s",
-                          (int)len, word, taken[prop], want_range, taken[prop]);
-                row->range_text = taken[prop];
-                conf_parse_range(row->range_text, &row->range);
-            } else {
-                conf_fail("the range \"%s\" for %.*s", want_range, (int)len, word);
-            }
-        }
-        text = eol + end_len;
+        check_discovery_row(prop, word, len, p, eol);
     }
     if (!ended) {
         conf_fail("a last line `end`");
     }
+}
+
+static void check_discovery(void)
+{
+    static bool listed[DARAN_PROP_COUNT];
+    char line[32];
+    memset(listed, 0, sizeof listed);
+    (void)snprintf(line, sizeof line, "h %u properties", CONF_ID);
+    if (!conf_begin(REQ_DISCOVERY, line)) {
+        conf_end();
+        return;
+    }
+    conf_send(line);
+    (void)conf_expect_no_effect();
+    check_discovery_lines(conf_reply(), conf_reply() + conf_reply_len(), listed);
     for (int i = 0; i < (int)DARAN_PROP_COUNT; i++) {
         if (conf_props[i].presence == PRESENT_IN_BUILD && !listed[i]) {
             char path[128];
