@@ -20,15 +20,37 @@ set(DARAN_STRICT_WARNINGS
     -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wstrict-prototypes
     -Wmissing-prototypes -Wcast-qual -Wundef -Werror)
 
-# One stage a file (docs/design.md). A global property, as the functions
-# below run in their callers' directory scopes.
+# One stage a file, in a folder a room (docs/design.md): the link (ring,
+# framer, checksum), the ASCII front end, the request layer over the HAL
+# door, CAN (front end, codec, bridge), text and numbers, the property
+# table. A global property, as the functions below run in their callers'
+# directory scopes.
+set_property(GLOBAL PROPERTY DARAN_CORE_ROOMS link ascii request can text table)
 set_property(GLOBAL PROPERTY DARAN_CORE_SOURCES
-  can.c can_address.c can_bridge.c can_codec.c can_encode.c can_ring.c checksum.c command_table.c commands_common.c commands_motion.c commands_multi.c
-  commands_property.c commands_query.c commands_system.c discovery.c drive.c framer.c
-  hal.c number.c port_commands.c property_table.c reply.c request_preset.c request_property.c
-  request_state.c result.c rx_ring.c telemetry.c text.c
+  link/rx_ring.c link/framer.c link/checksum.c
+  ascii/drive.c ascii/command_table.c ascii/commands_common.c ascii/commands_motion.c
+  ascii/commands_multi.c ascii/commands_property.c ascii/commands_query.c
+  ascii/commands_system.c ascii/discovery.c ascii/port_commands.c ascii/telemetry.c
+  ascii/reply.c
+  request/request_preset.c request/request_property.c request/request_state.c request/hal.c
+  can/can.c can/can_address.c can/can_bridge.c can/can_codec.c can/can_encode.c can/can_ring.c
+  text/number.c text/text.c text/result.c
+  table/property_table.c
   version.c)
 set_property(GLOBAL PROPERTY DARAN_STRICT_WARNINGS ${DARAN_STRICT_WARNINGS})
+
+# daran_core_include_dirs(<out>): the core's own folders (src and each
+# room), for what includes its internal headers (the library, its tests,
+# the client, the benchmarks).
+function(daran_core_include_dirs out)
+  get_property(_root GLOBAL PROPERTY DARAN_ASCII_ROOT)
+  get_property(_rooms GLOBAL PROPERTY DARAN_CORE_ROOMS)
+  set(_dirs "${_root}/src")
+  foreach(_room IN LISTS _rooms)
+    list(APPEND _dirs "${_root}/src/${_room}")
+  endforeach()
+  set(${out} ${_dirs} PARENT_SCOPE)
+endfunction()
 
 # Compile <target> with the core's warning set, as errors.
 function(daran_ascii_strict_warnings target)
@@ -112,7 +134,7 @@ function(daran_ascii_add_library target)
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "daran_ascii_add_library(${target}): unknown arguments ${arg_UNPARSED_ARGUMENTS}")
   endif()
-  _daran_package_dir(_root "daran_ascii_add_library(${target})" "" src/drive.c
+  _daran_package_dir(_root "daran_ascii_add_library(${target})" "" src/ascii/drive.c
                      tools/gen_property_index.py)
   get_property(_include GLOBAL PROPERTY DARAN_ASCII_INCLUDE_DIR)
 
@@ -152,7 +174,8 @@ function(daran_ascii_add_library target)
     list(APPEND _sources "${_root}/src/${_source}")
   endforeach()
   add_library(${target} STATIC ${_sources})
-  target_include_directories(${target} PRIVATE "${_gen_dir}" "${_root}/src")
+  daran_core_include_dirs(_rooms)
+  target_include_directories(${target} PRIVATE "${_gen_dir}" ${_rooms})
   target_include_directories(${target} PUBLIC "$<BUILD_INTERFACE:${_include}>")
   target_compile_features(${target} PUBLIC c_std_99)
   # Built as C11 for <stdatomic.h> (the receive ring's acquire/release); the

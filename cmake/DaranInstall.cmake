@@ -83,8 +83,8 @@ install(FILES
 # the core's sources and the property-index generator, in the source tree's
 # layout under share/daran_ascii, and the CMake modules with the package's
 # functions (each folder installs its own sources: port/sim, testkit).
-file(GLOB _daran_core_files "${PROJECT_SOURCE_DIR}/src/*.c" "${PROJECT_SOURCE_DIR}/src/*.h")
-install(FILES ${_daran_core_files} DESTINATION "${DARAN_INSTALL_DATADIR}/src")
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/src/" DESTINATION "${DARAN_INSTALL_DATADIR}/src"
+        FILES_MATCHING PATTERN "*.c" PATTERN "*.h")
 install(PROGRAMS "${PROJECT_SOURCE_DIR}/tools/gen_property_index.py"
         DESTINATION "${DARAN_INSTALL_DATADIR}/tools")
 set(_daran_modules)

@@ -49,6 +49,8 @@ endif()
 # for the functions that compile its sources (here: this source tree).
 include(DaranAddLibrary)
 daran_ascii_set_root("${PROJECT_SOURCE_DIR}" "${PROJECT_SOURCE_DIR}/include")
+# The core's internal folders, for this tree's tests, client and benchmarks.
+daran_core_include_dirs(DARAN_CORE_INTERNAL_INCLUDES)
 # The package's other functions, defined whether or not this build makes the
 # simulator or the test kit itself (a project that adds this tree with
 # add_subdirectory() calls them for its own core).

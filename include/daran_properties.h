@@ -243,7 +243,7 @@ typedef enum daran_prop_type {
 /** @endcond */
 
 /** The ranges: X(NAME, text). The text is what discovery prints and what
- * `w` checks (src/property_table.c reads it): a sign condition (">=0",
+ * `w` checks (src/table/property_table.c reads it): a sign condition (">=0",
  * ">0", "<=0"), an interval ("a..b"), a set ("{a,b,...}" or "a|b", one
  * value "a"), or "" for any value of the type. Float properties take the
  * sign conditions and intervals ("0..1", "-0.5..2.5e3": decimal ends, the

@@ -10,7 +10,7 @@
 #   brake  examples/port-brake/brake_options.h (2 rows, 5 vendor rows omitted)
 #   rows   bench/extensions/rows_only.h (the example's 2 rows only)
 #   omit   bench/extensions/omit_only.h (the example's 5 omissions only)
-# then src/drive.c and src/command_table.c once more with the core's exact
+# then src/ascii/drive.c and src/ascii/command_table.c once more with the core's exact
 # compile command, through no_port_drive.c / no_port_command_table.c (the
 # port hooks compiled away), for what the hooks add to those objects.
 # Links OUT_DIR/ext-none.elf and OUT_DIR/ext-brake.elf (ext_main.c,
@@ -42,15 +42,16 @@ python3 - "$out/core-none" <<'EOF'
 import json, os, shlex, subprocess, sys
 tree = sys.argv[1]
 commands = json.load(open(os.path.join(tree, "compile_commands.json")))
-for source, wrapper in (("drive.c", "no_port_drive.c"),
-                        ("command_table.c", "no_port_command_table.c")):
+for source, wrapper in (("ascii/drive.c", "no_port_drive.c"),
+                        ("ascii/command_table.c", "no_port_command_table.c")):
     entry = next(e for e in commands if e["file"].endswith("/src/" + source))
     args = shlex.split(entry["command"])
     args = [a for a in args if not a.startswith(("-fstack-usage", "-fcallgraph-info"))]
-    out = os.path.abspath(os.path.join(tree, "no-port-" + source[:-2] + ".o"))
+    out = os.path.abspath(os.path.join(tree, "no-port-" + os.path.basename(source)[:-2] + ".o"))
     args[args.index("-o") + 1] = out
     args[args.index("-c") + 1] = os.path.abspath(os.path.join("bench/extensions", wrapper))
-    args.insert(1, "-I" + os.path.abspath("src"))
+    for room in ("src", "src/ascii", "src/link", "src/request", "src/can", "src/text", "src/table"):
+        args.insert(1, "-I" + os.path.abspath(room))
     subprocess.run(args, check=True, cwd=entry["directory"])
 EOF
 

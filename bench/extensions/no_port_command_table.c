@@ -1,4 +1,4 @@
-/* Flash measurement only (bench/extensions/build.sh): src/command_table.c
+/* Flash measurement only (bench/extensions/build.sh): src/ascii/command_table.c
  * as it would compile without port commands and discovery. `h` lists no
  * port command (the count reads as 0, so the loop goes) and `h id
  * properties` calls no discovery; the size difference to command_table.o is
@@ -7,4 +7,4 @@
 
 #define daran_cmd_discovery(drive, request) ((void)(request), DARAN_ERR_INVALID_VALUE)
 #define port_command_count port_command_count * 0u
-#include "../../src/command_table.c"
+#include "../../src/ascii/command_table.c"

@@ -8,7 +8,7 @@
  * closer (closest).
  * Includes number.c to reach its internal helpers. Release build only. */
 #define _POSIX_C_SOURCE 200809L
-#include "../../src/number.c"
+#include "../../src/text/number.c"
 
 #include <inttypes.h>
 #include <stdio.h>

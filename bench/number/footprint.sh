@@ -6,7 +6,7 @@ set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=$(mktemp -d)
 cflags="-Os -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -ffunction-sections -fdata-sections"
-arm-none-eabi-gcc $cflags -std=c99 -I"$root/include" -I"$root/src" -c "$root/src/number.c" -o "$out/number.o"
+arm-none-eabi-gcc $cflags -std=c99 -I"$root/include" -I"$root/src" -I"$root/src/text" -c "$root/src/text/number.c" -o "$out/number.o"
 echo "== number.o ($cflags)"
 arm-none-eabi-size "$out/number.o"
 echo "== aeabi double helpers referenced by number.o (should be none):"
@@ -20,7 +20,7 @@ for v in 0 1 2 3; do
     src="$root/bench/number/footprint/fp_main.c"
     objs=""
     [ "$v" = 3 ] && objs="$out/number.o"
-    arm-none-eabi-gcc $cflags -DVARIANT=$v -I"$root/include" -I"$root/src" "$src" $objs \
+    arm-none-eabi-gcc $cflags -DVARIANT=$v -I"$root/include" -I"$root/src" -I"$root/src/text" "$src" $objs \
         --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections $extra -o "$out/v$v.elf"
     set -- $(arm-none-eabi-size "$out/v$v.elf" | tail -1)
     total=$(( $1 + $2 ))

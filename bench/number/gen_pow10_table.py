@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Generates the power-of-ten tables of src/number.c (exact integer arithmetic).
+"""Generates the power-of-ten tables of src/text/number.c (exact integer arithmetic).
 
 Entry q (q = -64..45) is floor(10^q * 2^(63 - floor(log2(10^q)))): the 64 leading
 bits of 10^q, truncated, with bit 63 set. Parsing uses q = -64..38, printing uses
@@ -46,7 +46,7 @@ def floor_log10(x):
 
 
 def check_log_formulas():
-    """The integer formulas of src/number.c, against exact values."""
+    """The integer formulas of src/text/number.c, against exact values."""
     for x in range(-70, 71):
         assert (x * 1741647) >> 19 == floor_log2(Fraction(10) ** x), x
     for q in range(-149, 105):

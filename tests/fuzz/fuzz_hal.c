@@ -269,7 +269,7 @@ static bool integer_in_range(daran_range_t range, int64_t x)
 }
 
 /* What the core promises of every value it writes (daran_properties.h,
- * mirrored from src/commands_property.c's rules): finite floats within the
+ * mirrored from src/ascii/commands_property.c's rules): finite floats within the
  * float ranges (the integer-only ranges put no bound on a float); integers
  * of the type within the range; u64 unbounded (serial numbers are
  * read-only). */

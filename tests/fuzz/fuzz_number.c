@@ -1,4 +1,4 @@
-/* Harness 3: the number code of src/number.h against references.
+/* Harness 3: the number code of src/text/number.h against references.
  *
  * Input byte 0 picks the test, the rest is its argument:
  *  0: text -> daran_parse_f32 vs glibc strtof (correctly rounded, round to

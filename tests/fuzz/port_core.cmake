@@ -35,9 +35,9 @@ function(daran_port_core target)
     endif()
   endforeach()
   add_library(${target} STATIC ${_src})
-  # the port's index first: src/property_table.c includes "property_index.h"
+  # the port's index first: src/table/property_table.c includes "property_index.h"
   target_include_directories(${target} BEFORE PRIVATE ${_gen})
-  target_include_directories(${target} PRIVATE ${_dir})
+  target_include_directories(${target} PRIVATE ${DARAN_CORE_INTERNAL_INCLUDES})
   target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR}/include)
   target_compile_definitions(${target} PUBLIC DARAN_CONFIG_HEADER=${DARAN_PORT_EXAMPLE_OPTIONS})
   target_compile_options(${target} PRIVATE -fno-math-errno ${ARGN})

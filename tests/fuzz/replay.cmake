@@ -15,7 +15,7 @@ foreach(h stream line number sim telemetry port can bridge)
     continue()
   endif()
   add_executable(fuzz_replay_${h} ${_fz}/fuzz_${h}.c ${_fz}/fuzz_hal.c ${_fz}/replay_main.c)
-  target_include_directories(fuzz_replay_${h} PRIVATE ${PROJECT_SOURCE_DIR}/src ${_fz}
+  target_include_directories(fuzz_replay_${h} PRIVATE ${DARAN_CORE_INTERNAL_INCLUDES} ${_fz}
     ${PROJECT_SOURCE_DIR}/tests/support)
   target_compile_options(fuzz_replay_${h} PRIVATE -Wall -Wextra)
   if(h STREQUAL "port")

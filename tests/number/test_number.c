@@ -1,4 +1,4 @@
-/* Unit tests of the number module (src/number.h): the float grammar, correct
+/* Unit tests of the number module (src/text/number.h): the float grammar, correct
  * rounding at the hard places (exact halfway points, long tails, subnormals,
  * the overflow boundary, huge exponents), exact integers, and the printed
  * forms of spec section 4. */

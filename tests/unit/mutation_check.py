@@ -143,8 +143,11 @@ def main():
     timeouts = {p: max(60.0, 20.0 * t) for p, t in baseline.items()}
 
     src = os.path.join(tree, "src")
-    files = [f for f in sorted(os.listdir(src)) if f.endswith(".c") and f != "version.c"
-             and (only is None or f in only)]
+    # each file by its path under src/ (a room's folder and its name)
+    files = sorted(os.path.relpath(os.path.join(d, f), src)
+                   for d, _, names in os.walk(src) for f in names
+                   if f.endswith(".c") and f != "version.c")
+    files = [f for f in files if only is None or f in only or os.path.basename(f) in only]
     mutants = []
     keys = set()
     for f in files:

@@ -25,10 +25,11 @@ python3 tools/gen_property_index.py --list include/daran_properties.h --omit "" 
 warnings=(-Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wstrict-prototypes
           -Wmissing-prototypes -Werror)
 includes=(-Iinclude -Isrc -Itests/support -I"$work")
+for room in src/*/; do includes+=(-I"${room%/}"); done
 
 # The host's answer: gcc, the same sources.
 gcc -std=c11 -O2 "${warnings[@]}" "${includes[@]}" -o "$work/host" \
-  src/*.c tests/support/stub_hal.c tests/portability/portable_check.c -lm
+  src/*.c src/*/*.c tests/support/stub_hal.c tests/portability/portable_check.c -lm
 "$work/host" >"$work/host.txt"
 
 # The AVR's: C99 core (no <stdatomic.h> there; avr-gcc ships no __atomic
@@ -36,7 +37,7 @@ gcc -std=c11 -O2 "${warnings[@]}" "${includes[@]}" -o "$work/host" \
 avr=(avr-gcc -mmcu=atmega1284p -Os -std=c99 -fno-math-errno
      '-DDARAN_PORT_BARRIER()=__sync_synchronize()' "${warnings[@]}" "${includes[@]}")
 objs=()
-for f in src/*.c tests/support/stub_hal.c tests/portability/portable_check.c; do
+for f in src/*.c src/*/*.c tests/support/stub_hal.c tests/portability/portable_check.c; do
   o="$work/$(basename "$f" .c).o"
   "${avr[@]}" -c "$f" -o "$o"
   objs+=("$o")

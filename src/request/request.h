@@ -1,5 +1,5 @@
 /* The request layer: what both front ends ask of a drive once a line's
- * text (src/commands_*.c) or a frame's bytes (src/can.c) are decoded: run a
+ * text (src/ascii/commands_*.c) or a frame's bytes (src/can/can.c) are decoded: run a
  * motion, store and start a preset, check and commit a property value, run
  * an action, read a property. Ranges, state rules and HAL calls are written
  * here once; the HAL door (hal.h) is this layer's bottom, and nothing above
