@@ -99,6 +99,12 @@ static const uint8_t *skip_overlong(daran_drive_t *drive, const uint8_t *in, con
     return stop;
 }
 
+/* Over 80 lines on purpose: the library's hottest loop (every byte received
+ * passes it; perf_insns_per_line holds framing and the ring to 12
+ * instructions a byte), kept one function so that its state stays in
+ * registers. With the byte decision out of line (`other_byte()`, issue 20)
+ * the framer took 358 instructions of `t 1 10 0 25 *83`, folded back in 318
+ * (docs/performance.md, "The framer's state in locals"). */
 size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, bool from_ring,
                          bool *ended)
 {
@@ -159,7 +165,8 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
                 if (in == all || (in = skip_overlong(drive, in, all, from_ring)) == all) {
                     goto out_of_bytes;
                 }
-                /* The full line's line end: decided below, never stored. */
+                /* The full line's line end, never stored: decided below as
+                 * if it stood just past the line's last byte. */
                 byte = *in++;
                 goto decide;
             }
