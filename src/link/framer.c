@@ -26,7 +26,6 @@ void daran_framer_reset(daran_drive_t *drive)
     drive->line_flags = 0;
     drive->star_at = DARAN_LINE_MAX;
     drive->fields.count = 0;
-    drive->fields.start[0] = 0; /* where the first field would start */
 }
 
 /* The field bytes a line is made of, almost all of them: '+' (0x2B) to '~'.
@@ -69,6 +68,43 @@ static bool is_line_end(uint8_t byte, bool from_ring)
     return byte == '\n' || (from_ring && byte == DARAN_RX_DAMAGED_END);
 }
 
+/* The one place a field is recorded: the field that began at `start` ends
+ * at `at`, the byte after its last; an empty one is no field. Past
+ * DARAN_FIELDS_MAX fields nothing more is recorded, and the line has too
+ * many fields whatever its command. Returns the new field count. */
+static DARAN_ALWAYS_INLINE unsigned close_field(daran_fields_t *fields, unsigned count,
+                                                size_t start, size_t at)
+{
+    if (at > start && count < DARAN_FIELDS_MAX) {
+        fields->start[count] = (daran_line_offset_t)start;
+        fields->len[count] = (daran_line_offset_t)(at - start);
+        count++;
+    }
+    return count;
+}
+
+/* A full line takes only its line end; anything else makes it too long:
+ * discard up to the line end, which is still honoured. Returns where the
+ * line end is, or `all` when these bytes have none. */
+static const uint8_t *skip_overlong(daran_drive_t *drive, const uint8_t *in, const uint8_t *all,
+                                    bool from_ring)
+{
+    const uint8_t *stop = in;
+    while (stop != all && !is_line_end(*stop, from_ring)) {
+        stop++;
+    }
+    if (stop != in) {
+        drive->line_flags |= DARAN_LINE_TOO_LONG;
+    }
+    return stop;
+}
+
+/* Over 80 lines on purpose: the library's hottest loop (every byte received
+ * passes it; perf_insns_per_line holds framing and the ring to 12
+ * instructions a byte), kept one function so that its state stays in
+ * registers. With the byte decision out of line (`other_byte()`, issue 20)
+ * the framer took 358 instructions of `t 1 10 0 25 *83`, folded back in 318
+ * (docs/performance.md, "The framer's state in locals"). */
 size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, bool from_ring,
                          bool *ended)
 {
@@ -81,12 +117,15 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
     char *out = line + drive->line_len;
     unsigned count = fields->count;
     size_t star_at = drive->star_at;
+    /* Where the field being read began: at the next byte, unless the last
+     * bytes ended inside a field, which goes on. */
+    size_t start = drive->line_len;
     if ((drive->line_flags & DARAN_LINE_IN_FIELD) != 0u) {
-        count--; /* the field the last bytes ended in goes on */
+        count--;
+        start = fields->start[count];
     }
-    /* Where the field being read began (or the next one will). */
-    size_t start = count < DARAN_FIELDS_MAX ? fields->start[count] : 0u;
     const uint8_t *in = bytes;
+    const uint8_t *all = bytes + n;
     /* Every byte taken before the line end is stored: the line has room for
      * the bytes up to `end`, so the loop checks no length of its own. */
     size_t room = DARAN_LINE_MAX - drive->line_len;
@@ -97,11 +136,11 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
     const uint8_t *words_end = bytes + (span >= 3u ? span - 3u : 0u);
 #endif
     bool line_ended = false;
+    uint8_t byte;
     for (;;) {
         /* A run of common field bytes is copied and passed over, a word at
          * a time where the target reads unaligned words cheaply; the byte
          * that stops the run is stored with it and decided below. */
-        uint8_t byte;
 #if DARAN_CHEAP_UNALIGNED_WORDS
         if (in < words_end) {
             do {
@@ -123,26 +162,24 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
 #endif
         do {
             if (in == end) {
-                goto out_of_bytes;
+                if (in == all || (in = skip_overlong(drive, in, all, from_ring)) == all) {
+                    goto out_of_bytes;
+                }
+                /* The full line's line end, never stored: decided below as
+                 * if it stood just past the line's last byte. */
+                byte = *in++;
+                goto decide;
             }
             byte = *in++;
             *out++ = (char)byte;
         } while (is_common_field_byte(byte));
         out--;
-#if DARAN_CHEAP_UNALIGNED_WORDS
     decide:
-#endif
         if (byte <= ' ' || byte == '*' || byte >= 0x7Fu) {
             if (star_at == DARAN_LINE_MAX) {
+                /* it ends the field before it */
                 size_t at = (size_t)(out - line);
-                /* it ends the field before it, if that is not empty; past
-                 * DARAN_FIELDS_MAX fields nothing more is recorded, and the
-                 * line has too many fields whatever its command */
-                if (at > start && count < DARAN_FIELDS_MAX) {
-                    fields->start[count] = (daran_line_offset_t)start;
-                    fields->len[count] = (daran_line_offset_t)(at - start);
-                    count++;
-                }
+                count = close_field(fields, count, start, at);
                 start = at + 1u;
                 if (byte == '*') {
                     star_at = at;
@@ -165,43 +202,16 @@ size_t daran_framer_feed(daran_drive_t *drive, const uint8_t *bytes, size_t n, b
     }
 out_of_bytes:;
     size_t at = (size_t)(out - line);
-    const uint8_t *all = bytes + n;
-    if (!line_ended && in != all) {
-        /* A full line takes only its line end; anything else makes it too
-         * long: discard up to the line end, which is still honoured. */
-        const uint8_t *stop = in;
-        while (stop != all && !is_line_end(*stop, from_ring)) {
-            stop++;
-        }
-        if (stop != in) {
-            drive->line_flags |= DARAN_LINE_TOO_LONG;
-            in = stop;
-        }
-        if (in != all) {
-            /* the line end: it ends the last field, and is never stored */
-            if (star_at == DARAN_LINE_MAX && at > start && count < DARAN_FIELDS_MAX) {
-                fields->start[count] = (daran_line_offset_t)start;
-                fields->len[count] = (daran_line_offset_t)(at - start);
-                count++;
-            }
-            start = at; /* no field goes on past the line end */
-            if (*in++ != '\n') {
-                drive->line_flags |= DARAN_LINE_DAMAGED;
-            }
-            line_ended = true;
-        }
-    }
     unsigned flags = drive->line_flags & ~DARAN_LINE_IN_FIELD;
-    if (star_at == DARAN_LINE_MAX && count < DARAN_FIELDS_MAX) {
-        fields->start[count] = (daran_line_offset_t)start;
-        if (at > start) {
-            /* The bytes end inside a field (a text without its line end, or
-             * the ring's run): count it, so the line is whole if nothing
-             * follows; the next bytes take it up again. */
-            fields->len[count] = (daran_line_offset_t)(at - start);
-            count++;
+    if (!line_ended && star_at == DARAN_LINE_MAX) {
+        /* The bytes end inside a field (a text without its line end, or the
+         * ring's run): count it, so the line is whole if nothing follows;
+         * the next bytes take it up again. */
+        unsigned closed = close_field(fields, count, start, at);
+        if (closed != count) {
             flags |= DARAN_LINE_IN_FIELD;
         }
+        count = closed;
     }
     fields->count = (uint8_t)count;
     drive->line_len = (uint16_t)at;
