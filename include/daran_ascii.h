@@ -10,6 +10,7 @@
 #include "daran_hal.h"
 #include "daran_port.h"
 #include "daran_properties.h"
+#include "daran_protocol.h"
 #include "daran_result.h"
 #include "daran_version.h"
 

@@ -55,7 +55,7 @@ check_install_tree() {
   local prefix=$1
   for f in include/daran_ascii.h include/daran_drive.h include/daran_hal.h \
            include/daran_config.h include/daran_properties.h include/daran_result.h \
-           include/daran_can.h include/daran_client.h lib/libdaran_client.a \
+           include/daran_can.h include/daran_client.h include/daran_protocol.h lib/libdaran_client.a \
            lib/libdaran_ascii.a lib/pkgconfig/daran_ascii.pc lib/pkgconfig/daran_client.pc \
            lib/cmake/daran_ascii/daran_asciiConfig.cmake \
            lib/cmake/daran_ascii/daran_asciiConfigVersion.cmake \
