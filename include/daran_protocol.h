@@ -56,11 +56,13 @@
 
 #include "daran_config.h"
 
+/** The word of `h id properties [prefix]` (discovery). */
+#define DARAN_H_PROPERTIES_WORD "properties"
 /** The text of `h`'s properties form; a drive with discovery lists `h` as
  * "h id [properties [prefix]]". */
-#define DARAN_H_PROPERTIES_WORD "properties"
 #define DARAN_H_PROPERTIES_HELP DARAN_H_PROPERTIES_WORD " [prefix]"
 
+/** The protocol's own requests (the columns are above). */
 /* clang-format off */
 #define DARAN_PROTOCOL_CORE_COMMANDS(X)                                                            \
     X(T,  't', 0,   ALWAYS, MOTION, SILENT, ONCE, motion, FILTERED, MOTION, "pos [vel] [bw]",      \
@@ -120,17 +122,22 @@
 /* clang-format on */
 
 #ifndef DARAN_EXTRA_COMMANDS
+/** A build's own requests, from its options header (none by default). */
 #define DARAN_EXTRA_COMMANDS(X)
 #endif
 
 /** Every request: the core's, then the build's own. */
 #define DARAN_PROTOCOL_COMMANDS(X) DARAN_PROTOCOL_CORE_COMMANDS(X) DARAN_EXTRA_COMMANDS(X)
 
-/** The properties a QUERY row answers, in the order of its reply line (`e`:
+/* The properties a QUERY row answers, in the order of its reply line (`e`:
  * its seven lines). On CAN each is read at its own address. */
+/** `f`: position and velocity. */
 #define DARAN_QUERY_F(X) X(POS_ESTIMATE) X(VEL_ESTIMATE)
+/** `g`: bus voltage and current. */
 #define DARAN_QUERY_G(X) X(VBUS_VOLTAGE) X(IQ_MEASURED)
+/** `i`: firmware and hardware versions, serial number (last: the bridge reads its two halves). */
 #define DARAN_QUERY_I(X) X(FW_VERSION) X(HW_VERSION) X(SERIAL_NUMBER)
+/** `e`: the seven error registers, one line each. */
 #define DARAN_QUERY_E(X)                                                                    \
     X(AXIS_ERROR) X(MOTOR_ERROR) X(ENCODER_ERROR) X(CONTROLLER_ERROR) X(FET_THERMISTOR_ERROR) \
     X(MOTOR_THERMISTOR_ERROR) X(CAN_ERROR)
@@ -182,18 +189,20 @@
 #define DARAN_PF_PATH_FIRST_REQ_ID 0
 /** @endcond */
 
-/** The fewest / most fields after the word, and the fewest / most values
- * (numbers after the id), of a row's f1..f6. */
+/** The fewest fields after the word of a row's f1..f6. */
 #define DARAN_PROTOCOL_MIN_FIELDS(f1, f2, f3, f4, f5, f6)                                \
     (DARAN_PF_MIN_##f1 + DARAN_PF_MIN_##f2 + DARAN_PF_MIN_##f3 + DARAN_PF_MIN_##f4 + \
      DARAN_PF_MIN_##f5 + DARAN_PF_MIN_##f6)
+/** The most fields after the word. */
 #define DARAN_PROTOCOL_MAX_FIELDS(f1, f2, f3, f4, f5, f6)                                \
     (DARAN_PF_MAX_##f1 + DARAN_PF_MAX_##f2 + DARAN_PF_MAX_##f3 + DARAN_PF_MAX_##f4 + \
      DARAN_PF_MAX_##f5 + DARAN_PF_MAX_##f6)
+/** The fewest values (numbers after the id: F32, MODE, FLAG). */
 #define DARAN_PROTOCOL_MIN_VALUES(f1, f2, f3, f4, f5, f6)                                  \
     (DARAN_PF_VALUES_##f1 * DARAN_PF_MIN_##f1 + DARAN_PF_VALUES_##f2 * DARAN_PF_MIN_##f2 + \
      DARAN_PF_VALUES_##f3 * DARAN_PF_MIN_##f3 + DARAN_PF_VALUES_##f4 * DARAN_PF_MIN_##f4 + \
      DARAN_PF_VALUES_##f5 * DARAN_PF_MIN_##f5 + DARAN_PF_VALUES_##f6 * DARAN_PF_MIN_##f6)
+/** The most values. */
 #define DARAN_PROTOCOL_MAX_VALUES(f1, f2, f3, f4, f5, f6)                                \
     (DARAN_PF_VALUES_##f1 + DARAN_PF_VALUES_##f2 + DARAN_PF_VALUES_##f3 +                \
      DARAN_PF_VALUES_##f4 + DARAN_PF_VALUES_##f5 + DARAN_PF_VALUES_##f6)
