@@ -21,6 +21,7 @@
 #include "sim_pty.h"
 #include "sim_replies.h"
 #include "sim_time.h"
+#include "sim_wait.h"
 
 static line_source_t pty_source;
 static line_source_t stdin_source;
@@ -167,31 +168,13 @@ static void catch_up(void)
     }
 }
 
-/* A frame's end closer than this is waited for by polling without a
- * timeout rather than in the kernel: a timed wake-up comes tens of
- * microseconds late on a busy machine, and a request and its answer are
- * two of them in a round trip of about 0.26 ms. Only while a frame is on
- * the bus, so an idle simulator does not spin. */
-#define SPIN_BEFORE_FRAME_END_NS 150000u
-
 /* How long the loop may sleep: until the next tick, or the next frame's
- * end on the bus, whichever comes first; not at all when that end is near. */
+ * end on the bus (sim_wait_ns()). */
 static uint64_t sleep_ns(void)
 {
-    uint64_t wake = origin_ns + next_tick_ns();
-    uint64_t now = mono_ns();
-    bool frame_first = false;
-    if (app.can_on) {
-        uint64_t frame_end = daran_sim_can_bus_next_ns(&app.can.wire);
-        if (frame_end != UINT64_MAX && origin_ns + frame_end < wake) {
-            wake = origin_ns + frame_end;
-            frame_first = true;
-        }
-    }
-    if (wake <= now || (frame_first && wake - now <= SPIN_BEFORE_FRAME_END_NS)) {
-        return 0u;
-    }
-    return wake - now;
+    uint64_t frame_end = app.can_on ? daran_sim_can_bus_next_ns(&app.can.wire) : UINT64_MAX;
+    return sim_wait_ns(mono_ns(), origin_ns + next_tick_ns(),
+                       frame_end == UINT64_MAX ? UINT64_MAX : origin_ns + frame_end);
 }
 
 /* The pollfd set of one wait: the ASCII pty (@p pfd[0]), stdin ([1]), then
