@@ -160,8 +160,6 @@ void complain(const char *fmt, ...)
     app.status = 1;
 }
 
-/* A line's bytes for a message: printable ASCII as is, others as \xNN, at
- * most about 80 characters. */
 void quote_line(char *out, size_t size, const char *bytes, size_t len)
 {
     size_t o = 0u;

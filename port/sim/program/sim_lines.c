@@ -20,8 +20,6 @@ void source_init(line_source_t *s, bool directives, daran_sim_sink_fn sink)
     s->sink = sink;
 }
 
-/* Bytes up to the end of the current line (its '\n' included, *ended set)
- * or all of them; returns how many were taken. */
 size_t source_take(line_source_t *s, const char *bytes, size_t len, bool *ended)
 {
     const char *nl = memchr(bytes, '\n', len);
@@ -99,7 +97,6 @@ void source_end_line(line_source_t *s)
     s->directive = false;
 }
 
-/* Every line of @p bytes, until a signal asks to stop. */
 void source_feed(line_source_t *s, const char *bytes, size_t len)
 {
     while (len > 0u && stop_signal == 0) {

@@ -73,7 +73,6 @@ void report_can(void)
     }
 }
 
-/* The console's node received a frame: a `can ...` line on stdout. */
 void console_receive(void *ctx, const daran_can_frame_t *frame, uint64_t end_ns)
 {
     char line[SIM_CAN_TEXT_LINE_MAX];

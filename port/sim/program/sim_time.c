@@ -10,7 +10,6 @@
 #include "sim_record.h"
 #include "sim_replies.h"
 
-/* @p n control ticks; a signal stops the run between two ticks. */
 void run_ticks(uint64_t n)
 {
     uint64_t k;
@@ -28,7 +27,6 @@ void run_ticks(uint64_t n)
     }
 }
 
-/* The simulated time of the next control tick, in nanoseconds. */
 uint64_t next_tick_ns(void)
 {
     return daran_sim_can_tick_ns(&app.bus, app.bus.ticks + 1u);
