@@ -4,7 +4,7 @@
 #
 # makes the static library <target>: the sources of daran_sim.h (the motor
 # and load model, NVM, fault injection, extensions, the multi-drive bus)
-# compiled from <root>/port/sim against <core target> (a library of
+# compiled from <root>/port/sim/lib against <core target> (a library of
 # daran_ascii_add_library(), or daran_ascii::daran_ascii), whose options
 # header and property list decide the model's table (a port's own rows
 # included). Linking <target> gives daran_sim.h, the core and libm. <root> is
@@ -22,7 +22,7 @@ function(daran_ascii_add_sim target)
                         "LIBRARY <core target>))")
   endif()
   _daran_check_core("daran_ascii_add_sim(${target})" "${_sim_LIBRARY}")
-  _daran_package_dir(_dir "daran_ascii_add_sim(${target})" port/sim daran_sim_sources.cmake)
+  _daran_package_dir(_dir "daran_ascii_add_sim(${target})" port/sim/lib daran_sim_sources.cmake)
   include("${_dir}/daran_sim_sources.cmake")
   list(TRANSFORM DARAN_SIM_LIBRARY_SOURCES PREPEND "${_dir}/")
 

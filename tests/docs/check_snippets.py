@@ -38,7 +38,7 @@ from docs_common import (HERE, AllowList, Findings, arguments, default_docs, exp
 MARKER = "<!-- compiled: a complete example (tests/docs/check_snippets.py) -->"
 # The public headers an example may include: the core, the test kit, the
 # simulated drive, the minimal port (the client is in include/).
-HEADER_DIRS = ("include", "testkit/include", "port/sim", "port/minimal")
+HEADER_DIRS = ("include", "testkit/include", "port/sim/lib", "port/minimal")
 NODISCARD_RE = re.compile(r"DARAN_NODISCARD\s+[\w\s\*]*?\b(daran_\w+)\s*\(")
 MACRO_RE = re.compile(r"#define\s+(daran_\w+)\s*\([^)]*\)\s*(?:\\\s*)*\(?\s*(daran_\w+)\s*\(")
 # a call that begins a statement: after ; { } or at the block's start (one after

@@ -1042,72 +1042,65 @@ static float velocity_loop(daran_sim_model_t *m, float vel_des_turn_s, float lim
     return torque;
 }
 
-static void control(daran_sim_model_t *m)
+/* The velocity modes; false when the shaft met a circular setpoint limit and
+ * is held there (passthrough: the position loop takes it). */
+static bool control_velocity(daran_sim_model_t *m, float pos, float lim, float vlim,
+                             bool vel_limited)
 {
-    float pos = daran_sim_model_pos_deg(m);
-    float lim = daran_sim_model_torque_limit(m);
-    float vlim = daran_sim_model_vel_limit_rpm(m);
-    bool vel_limited = cfgb(m, DARAN_PROP_ENABLE_VEL_LIMIT);
+    if (m->mode == DARAN_SIM_MODE_VELOCITY) {
+        m->vel_sp = m->input_vel;
+        m->torque_ff = m->input_torque;
+    } else {
+        m->vel_sp = approach(m->vel_sp, m->input_vel,
+                             cfgf(m, DARAN_PROP_VEL_RAMP_RATE) * m->dt);
+        m->torque_ff = 0.0f;
+    }
+    if (vel_limited) {
+        m->vel_sp = clampf(m->vel_sp, -vlim, vlim);
+    }
+    guard_limits(m, pos, m->vel_sp);
+    if (m->mode == DARAN_SIM_MODE_PASSTHROUGH) {
+        return false;
+    }
+    m->torque_cmd = velocity_loop(m, m->vel_sp / RPM_PER_TURN_S, lim);
+    return true;
+}
+
+/* The torque modes; false as control_velocity() at a setpoint limit. */
+static bool control_torque(daran_sim_model_t *m, float pos, float lim, float vlim)
+{
+    float torque;
+    if (m->mode == DARAN_SIM_MODE_TORQUE) {
+        torque = m->input_torque;
+    } else {
+        torque = approach(m->torque_cmd, m->input_torque,
+                          cfgf(m, DARAN_PROP_TORQUE_RAMP_RATE) * m->dt);
+    }
+    m->vel_sp = 0.0f;
+    guard_limits(m, pos, torque);
+    if (m->mode == DARAN_SIM_MODE_PASSTHROUGH) {
+        return false;
+    }
+    if (cfgb(m, DARAN_PROP_ENABLE_CURRENT_MODE_VEL_LIMIT)) {
+        /* Fade the torque out as the speed passes the limit, as the
+         * velocity loop would. */
+        float gain = shaft_gain(m, DARAN_PROP_VEL_GAIN);
+        float hi = (vlim - m->vel_rpm) / RPM_PER_TURN_S * gain;
+        float lo = (-vlim - m->vel_rpm) / RPM_PER_TURN_S * gain;
+        torque = clampf(torque, lo < 0.0f ? lo : 0.0f, hi > 0.0f ? hi : 0.0f);
+    }
+    m->torque_cmd = clampf(torque, -lim, lim);
+    return true;
+}
+
+/* The position modes (and passthrough): the setpoint of the mode, then the
+ * position and velocity loops. */
+static void control_position(daran_sim_model_t *m, float pos, float lim, float vlim,
+                             bool vel_limited)
+{
     float inertia = daran_sim_model_inertia(m);
     float acc = 0.0f;
-    float torque;
-
-    m->acc_sp = 0.0f;
-    switch (m->mode) {
-    case DARAN_SIM_MODE_VELOCITY:
-    case DARAN_SIM_MODE_VELOCITY_RAMP:
-        if (m->mode == DARAN_SIM_MODE_VELOCITY) {
-            m->vel_sp = m->input_vel;
-            m->torque_ff = m->input_torque;
-        } else {
-            m->vel_sp = approach(m->vel_sp, m->input_vel,
-                                 cfgf(m, DARAN_PROP_VEL_RAMP_RATE) * m->dt);
-            m->torque_ff = 0.0f;
-        }
-        if (vel_limited) {
-            m->vel_sp = clampf(m->vel_sp, -vlim, vlim);
-        }
-        guard_limits(m, pos, m->vel_sp);
-        if (m->mode == DARAN_SIM_MODE_PASSTHROUGH) {
-            break;
-        }
-        m->torque_cmd = velocity_loop(m, m->vel_sp / RPM_PER_TURN_S, lim);
-        return;
-    case DARAN_SIM_MODE_TORQUE:
-    case DARAN_SIM_MODE_TORQUE_RAMP:
-        if (m->mode == DARAN_SIM_MODE_TORQUE) {
-            torque = m->input_torque;
-        } else {
-            torque = approach(m->torque_cmd, m->input_torque,
-                              cfgf(m, DARAN_PROP_TORQUE_RAMP_RATE) * m->dt);
-        }
-        m->vel_sp = 0.0f;
-        guard_limits(m, pos, torque);
-        if (m->mode == DARAN_SIM_MODE_PASSTHROUGH) {
-            break;
-        }
-        if (cfgb(m, DARAN_PROP_ENABLE_CURRENT_MODE_VEL_LIMIT)) {
-            /* Fade the torque out as the speed passes the limit, as the
-             * velocity loop would. */
-            float gain = shaft_gain(m, DARAN_PROP_VEL_GAIN);
-            float hi = (vlim - m->vel_rpm) / RPM_PER_TURN_S * gain;
-            float lo = (-vlim - m->vel_rpm) / RPM_PER_TURN_S * gain;
-            torque = clampf(torque, lo < 0.0f ? lo : 0.0f, hi > 0.0f ? hi : 0.0f);
-        }
-        m->torque_cmd = clampf(torque, -lim, lim);
-        return;
-    case DARAN_SIM_MODE_IMPEDANCE:
-        m->pos_sp = m->input_pos;
-        m->vel_sp = m->input_vel;
-        torque = m->kp * (m->input_pos - pos) + m->input_torque +
-                 m->kd * (m->input_vel - m->vel_rpm);
-        m->torque_cmd = clampf(torque, -lim, lim);
-        return;
-    default:
-        break;
-    }
-
-    /* position modes */
+    float vel_des;
     switch (m->mode) {
     case DARAN_SIM_MODE_FILTER:
         filter_step(m, limit_pos(m, m->input_pos), &acc);
@@ -1126,14 +1119,47 @@ static void control(daran_sim_model_t *m)
     m->acc_sp = acc;
     m->torque_ff = (m->mode == DARAN_SIM_MODE_PASSTHROUGH ? m->input_torque : 0.0f) +
                    inertia * acc / DEG_PER_TURN;
-    {
-        float vel_des = m->vel_sp / RPM_PER_TURN_S +
-                        cfgf(m, DARAN_PROP_POS_GAIN) * (m->pos_sp - pos) / DEG_PER_TURN;
-        if (vel_limited) {
-            vel_des = clampf(vel_des, -vlim / RPM_PER_TURN_S, vlim / RPM_PER_TURN_S);
-        }
-        m->torque_cmd = velocity_loop(m, vel_des, lim);
+    vel_des = m->vel_sp / RPM_PER_TURN_S +
+              cfgf(m, DARAN_PROP_POS_GAIN) * (m->pos_sp - pos) / DEG_PER_TURN;
+    if (vel_limited) {
+        vel_des = clampf(vel_des, -vlim / RPM_PER_TURN_S, vlim / RPM_PER_TURN_S);
     }
+    m->torque_cmd = velocity_loop(m, vel_des, lim);
+}
+
+static void control(daran_sim_model_t *m)
+{
+    float pos = daran_sim_model_pos_deg(m);
+    float lim = daran_sim_model_torque_limit(m);
+    float vlim = daran_sim_model_vel_limit_rpm(m);
+    bool vel_limited = cfgb(m, DARAN_PROP_ENABLE_VEL_LIMIT);
+    float torque;
+
+    m->acc_sp = 0.0f;
+    switch (m->mode) {
+    case DARAN_SIM_MODE_VELOCITY:
+    case DARAN_SIM_MODE_VELOCITY_RAMP:
+        if (control_velocity(m, pos, lim, vlim, vel_limited)) {
+            return;
+        }
+        break;
+    case DARAN_SIM_MODE_TORQUE:
+    case DARAN_SIM_MODE_TORQUE_RAMP:
+        if (control_torque(m, pos, lim, vlim)) {
+            return;
+        }
+        break;
+    case DARAN_SIM_MODE_IMPEDANCE:
+        m->pos_sp = m->input_pos;
+        m->vel_sp = m->input_vel;
+        torque = m->kp * (m->input_pos - pos) + m->input_torque +
+                 m->kd * (m->input_vel - m->vel_rpm);
+        m->torque_cmd = clampf(torque, -lim, lim);
+        return;
+    default:
+        break;
+    }
+    control_position(m, pos, lim, vlim, vel_limited);
 }
 
 /* The stall limiter of config.extra_setting: the current at or above
@@ -1308,57 +1334,72 @@ static void final_voltage(const daran_sim_model_t *m, float *alpha, float *beta)
     *beta = vd * sinf(theta) + vq * cosf(theta);
 }
 
+/* Measured values, states and error registers: true with the value in *v
+ * (zeroed by the caller), false for another property. */
+static bool get_state(const daran_sim_model_t *m, daran_prop_t prop, daran_value_t *v)
+{
+    float alpha;
+    float beta;
+    switch (prop) {
+    case DARAN_PROP_VBUS_VOLTAGE: v->f32 = m->vbus_v; break;
+    case DARAN_PROP_IBUS:
+    case DARAN_PROP_IBUS_MEASURED: v->f32 = m->ibus_a; break;
+    case DARAN_PROP_TRAJECTORY_DONE: v->u32 = m->trajectory_done ? 1u : 0u; break;
+    case DARAN_PROP_CURRENT_STATE: v->u32 = m->state; break;
+    case DARAN_PROP_REQUESTED_STATE: v->u32 = m->requested_state; break;
+    case DARAN_PROP_CONTROL_MODE: v->u32 = mode_numbers[m->mode].control; break;
+    case DARAN_PROP_INPUT_MODE: v->u32 = mode_numbers[m->mode].input; break;
+    case DARAN_PROP_AXIS_ERROR: v->u32 = m->error; break;
+    case DARAN_PROP_MOTOR_ERROR: v->u32 = m->motor_error; break;
+    case DARAN_PROP_CONTROLLER_ERROR: v->u32 = m->controller_error; break;
+    case DARAN_PROP_ENCODER_ERROR: v->u32 = m->encoder_error; break;
+    case DARAN_PROP_FET_THERMISTOR_ERROR: v->u32 = m->fet_thermistor_error; break;
+    case DARAN_PROP_MOTOR_THERMISTOR_ERROR: v->u32 = m->motor_thermistor_error; break;
+    case DARAN_PROP_CAN_ERROR: v->u32 = m->can_error; break;
+    case DARAN_PROP_CONFIG_WARNINGS: v->u32 = m->config_warnings; break;
+    case DARAN_PROP_FET_TEMPERATURE: v->f32 = m->fet_temp_c; break;
+    case DARAN_PROP_MOTOR_TEMPERATURE: v->f32 = m->motor_temp_c; break;
+    case DARAN_PROP_IQ_MEASURED:
+        v->f32 = m->torque_nm / cfgf(m, DARAN_PROP_TORQUE_CONSTANT);
+        break;
+    case DARAN_PROP_IQ_SETPOINT:
+        v->f32 = m->torque_cmd / cfgf(m, DARAN_PROP_TORQUE_CONSTANT);
+        break;
+    case DARAN_PROP_ID_MEASURED:
+    case DARAN_PROP_ID_SETPOINT:
+        v->f32 = 0.0f; /* field-oriented control without field weakening */
+        break;
+    case DARAN_PROP_FINAL_V_ALPHA:
+    case DARAN_PROP_FINAL_V_BETA:
+        final_voltage(m, &alpha, &beta);
+        v->f32 = prop == DARAN_PROP_FINAL_V_ALPHA ? alpha : beta;
+        break;
+    case DARAN_PROP_EFFECTIVE_CURRENT_LIM:
+        v->f32 = current_limit(m) * fet_derating(m) * motor_derating(m);
+        break;
+    case DARAN_PROP_MOTOR_IS_CALIBRATED:
+    case DARAN_PROP_ENCODER_IS_READY:
+    case DARAN_PROP_ENCODER_INDEX_FOUND:
+        v->u32 = 1u;
+        break;
+    default:
+        return false;
+    }
+    return true;
+}
+
 /* Everything but the views: measured values, runtime state, registers,
  * stored configuration. */
 static daran_result_t get_direct(const daran_sim_model_t *m, daran_prop_t prop,
                                  daran_value_t *out)
 {
     daran_value_t v;
-    float alpha;
-    float beta;
     v.u64 = 0u;
+    if (get_state(m, prop, &v)) {
+        *out = v;
+        return DARAN_OK;
+    }
     switch (prop) {
-    case DARAN_PROP_VBUS_VOLTAGE: v.f32 = m->vbus_v; break;
-    case DARAN_PROP_IBUS:
-    case DARAN_PROP_IBUS_MEASURED: v.f32 = m->ibus_a; break;
-    case DARAN_PROP_TRAJECTORY_DONE: v.u32 = m->trajectory_done ? 1u : 0u; break;
-    case DARAN_PROP_CURRENT_STATE: v.u32 = m->state; break;
-    case DARAN_PROP_REQUESTED_STATE: v.u32 = m->requested_state; break;
-    case DARAN_PROP_CONTROL_MODE: v.u32 = mode_numbers[m->mode].control; break;
-    case DARAN_PROP_INPUT_MODE: v.u32 = mode_numbers[m->mode].input; break;
-    case DARAN_PROP_AXIS_ERROR: v.u32 = m->error; break;
-    case DARAN_PROP_MOTOR_ERROR: v.u32 = m->motor_error; break;
-    case DARAN_PROP_CONTROLLER_ERROR: v.u32 = m->controller_error; break;
-    case DARAN_PROP_ENCODER_ERROR: v.u32 = m->encoder_error; break;
-    case DARAN_PROP_FET_THERMISTOR_ERROR: v.u32 = m->fet_thermistor_error; break;
-    case DARAN_PROP_MOTOR_THERMISTOR_ERROR: v.u32 = m->motor_thermistor_error; break;
-    case DARAN_PROP_CAN_ERROR: v.u32 = m->can_error; break;
-    case DARAN_PROP_CONFIG_WARNINGS: v.u32 = m->config_warnings; break;
-    case DARAN_PROP_FET_TEMPERATURE: v.f32 = m->fet_temp_c; break;
-    case DARAN_PROP_MOTOR_TEMPERATURE: v.f32 = m->motor_temp_c; break;
-    case DARAN_PROP_IQ_MEASURED:
-        v.f32 = m->torque_nm / cfgf(m, DARAN_PROP_TORQUE_CONSTANT);
-        break;
-    case DARAN_PROP_IQ_SETPOINT:
-        v.f32 = m->torque_cmd / cfgf(m, DARAN_PROP_TORQUE_CONSTANT);
-        break;
-    case DARAN_PROP_ID_MEASURED:
-    case DARAN_PROP_ID_SETPOINT:
-        v.f32 = 0.0f; /* field-oriented control without field weakening */
-        break;
-    case DARAN_PROP_FINAL_V_ALPHA:
-    case DARAN_PROP_FINAL_V_BETA:
-        final_voltage(m, &alpha, &beta);
-        v.f32 = prop == DARAN_PROP_FINAL_V_ALPHA ? alpha : beta;
-        break;
-    case DARAN_PROP_EFFECTIVE_CURRENT_LIM:
-        v.f32 = current_limit(m) * fet_derating(m) * motor_derating(m);
-        break;
-    case DARAN_PROP_MOTOR_IS_CALIBRATED:
-    case DARAN_PROP_ENCODER_IS_READY:
-    case DARAN_PROP_ENCODER_INDEX_FOUND:
-        v.u32 = 1u;
-        break;
     case DARAN_PROP_INPUT_POS: v.f32 = m->input_pos; break;
     case DARAN_PROP_INPUT_VEL: v.f32 = m->input_vel; break;
     case DARAN_PROP_INPUT_TORQUE: v.f32 = m->input_torque; break;
@@ -1458,57 +1499,72 @@ static uint32_t *error_register(daran_sim_model_t *m, daran_prop_t prop)
     }
 }
 
-static daran_result_t set_direct(daran_sim_model_t *m, daran_prop_t prop, daran_value_t value)
+/* The requested state and the modes: true with the write's result in
+ * *result, false for another property. */
+static bool set_state_or_mode(daran_sim_model_t *m, daran_prop_t prop, daran_value_t value,
+                              daran_result_t *result)
 {
-    uint32_t *reg = error_register(m, prop);
-    if (reg != NULL) {
-        uint32_t may_set = prop == DARAN_PROP_CAN_ERROR ? *reg | DARAN_SIM_CAN_ERROR_DUPLICATE_ID : 0u;
-        if ((value.u32 & ~may_set) != 0u) {
-            return DARAN_ERR_OUT_OF_RANGE;
-        }
-        *reg = value.u32;
-        return DARAN_OK;
-    }
     switch (prop) {
     case DARAN_PROP_REQUESTED_STATE:
         if (value.u32 == DARAN_STATE_CLOSED_LOOP) {
-            return daran_sim_model_closed_loop(m);
+            *result = daran_sim_model_closed_loop(m);
+            return true;
         }
         if (value.u32 == DARAN_STATE_IDLE) {
             daran_sim_model_trip(m, 0u);
-            return DARAN_OK;
+            *result = DARAN_OK;
+            return true;
         }
-        return DARAN_ERR_OUT_OF_RANGE;
+        *result = DARAN_ERR_OUT_OF_RANGE;
+        return true;
     case DARAN_PROP_CONTROL_MODE:
         if (value.u32 < 1u || value.u32 > 3u) {
-            return DARAN_ERR_OUT_OF_RANGE;
+            *result = DARAN_ERR_OUT_OF_RANGE;
+            return true;
         }
         if (mode_for_control(m, value.u32) != m->mode) {
             enter_mode(m, mode_for_control(m, value.u32));
         }
-        return DARAN_OK;
+        *result = DARAN_OK;
+        return true;
     case DARAN_PROP_INPUT_MODE:
         if (value.u32 < 1u || value.u32 > 9u || value.u32 == 4u || value.u32 == 7u ||
             value.u32 == 8u) {
-            return DARAN_ERR_OUT_OF_RANGE;
+            *result = DARAN_ERR_OUT_OF_RANGE;
+            return true;
         }
         if (mode_for_input(m, value.u32) != m->mode) {
             enter_mode(m, mode_for_input(m, value.u32));
         }
-        return DARAN_OK;
+        *result = DARAN_OK;
+        return true;
+    default:
+        return false;
+    }
+}
+
+/* The inputs, the setpoints and the zero, which act at once: true with the
+ * write's result in *result, false for another property. */
+static bool set_input(daran_sim_model_t *m, daran_prop_t prop, daran_value_t value,
+                      daran_result_t *result)
+{
+    switch (prop) {
     case DARAN_PROP_INPUT_POS:
         m->input_pos = value.f32;
         if (m->mode == DARAN_SIM_MODE_TRAPEZOID) {
             m->trap_start = m->pos_sp;
             trap_plan(m, limit_pos(m, value.f32));
         }
-        return DARAN_OK;
+        *result = DARAN_OK;
+        return true;
     case DARAN_PROP_INPUT_VEL:
         m->input_vel = value.f32;
-        return DARAN_OK;
+        *result = DARAN_OK;
+        return true;
     case DARAN_PROP_INPUT_TORQUE:
         m->input_torque = value.f32;
-        return DARAN_OK;
+        *result = DARAN_OK;
+        return true;
     case DARAN_PROP_POS_SETPOINT:
         enter_position_mode(m, DARAN_SIM_MODE_PASSTHROUGH);
         m->input_pos = value.f32;
@@ -1516,29 +1572,44 @@ static daran_result_t set_direct(daran_sim_model_t *m, daran_prop_t prop, daran_
         m->input_vel = 0.0f;
         m->input_torque = 0.0f;
         m->trajectory_done = true;
-        return DARAN_OK;
+        *result = DARAN_OK;
+        return true;
     case DARAN_PROP_VEL_SETPOINT:
         m->mode = DARAN_SIM_MODE_VELOCITY;
         m->input_vel = value.f32;
         m->vel_sp = value.f32;
         m->input_torque = 0.0f;
         m->trajectory_done = true;
-        return DARAN_OK;
+        *result = DARAN_OK;
+        return true;
     case DARAN_PROP_TORQUE_SETPOINT:
         m->mode = DARAN_SIM_MODE_TORQUE;
         m->input_torque = value.f32;
         m->torque_cmd = m->state == DARAN_STATE_CLOSED_LOOP ? value.f32 : 0.0f;
         m->trajectory_done = true;
-        return DARAN_OK;
+        *result = DARAN_OK;
+        return true;
     case DARAN_PROP_ZERO_OFFSET_COUNTS: {
         float raw = value.f32 / (float)m->cfg[DARAN_PROP_ENCODER_CPR].s32 / gear(m) *
                     DEG_PER_TURN;
         if (!isfinite(raw)) {
-            return DARAN_ERR_OUT_OF_RANGE;
+            *result = DARAN_ERR_OUT_OF_RANGE;
+            return true;
         }
         move_zero(m, raw);
-        return DARAN_OK;
+        *result = DARAN_OK;
+        return true;
     }
+    default:
+        return false;
+    }
+}
+
+/* A stored setting (the few the model divides by or times with are checked
+ * first); READ_ONLY for a property that is none. */
+static daran_result_t set_config(daran_sim_model_t *m, daran_prop_t prop, daran_value_t value)
+{
+    switch (prop) {
     case DARAN_PROP_GEAR_RATIO:
     case DARAN_PROP_STEPS_PER_TURN:
     case DARAN_PROP_TORQUE_CONSTANT:
@@ -1562,6 +1633,24 @@ static daran_result_t set_direct(daran_sim_model_t *m, daran_prop_t prop, daran_
     }
     m->cfg[prop] = value;
     return DARAN_OK;
+}
+
+static daran_result_t set_direct(daran_sim_model_t *m, daran_prop_t prop, daran_value_t value)
+{
+    daran_result_t result;
+    uint32_t *reg = error_register(m, prop);
+    if (reg != NULL) {
+        uint32_t may_set = prop == DARAN_PROP_CAN_ERROR ? *reg | DARAN_SIM_CAN_ERROR_DUPLICATE_ID : 0u;
+        if ((value.u32 & ~may_set) != 0u) {
+            return DARAN_ERR_OUT_OF_RANGE;
+        }
+        *reg = value.u32;
+        return DARAN_OK;
+    }
+    if (set_state_or_mode(m, prop, value, &result) || set_input(m, prop, value, &result)) {
+        return result;
+    }
+    return set_config(m, prop, value);
 }
 
 daran_result_t daran_sim_model_set(daran_sim_model_t *m, daran_prop_t prop,

@@ -1,10 +1,8 @@
 # The simulated drive library (daran_sim.h): its sources and public headers,
-# relative to this folder. Read by port/sim/CMakeLists.txt and by
+# relative to this folder. Read by port/sim/lib/CMakeLists.txt and by
 # daran_ascii_add_sim() (cmake/DaranSim.cmake), in the source tree and from
-# <prefix>/share/daran_ascii/port/sim where the package installs this folder.
-# daran-sim's own files (sim_main.c, sim_file_storage.*, sim_pty.*, the CAN
-# adapters sim_can_pty.*, sim_slcan.*, sim_usbcan.*, sim_can_text.*, the
-# --bridge gateway sim_gateway.*) are not part of it.
+# <prefix>/share/daran_ascii/port/sim/lib where the package installs this
+# folder. daran-sim's own files are in ../program, not part of it.
 set(DARAN_SIM_LIBRARY_SOURCES
   sim_model.c
   sim_nvm.c
