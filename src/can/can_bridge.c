@@ -160,7 +160,7 @@ static daran_result_t answer(daran_can_bridge_t *bridge)
      * one value: high * 2^32 + low */
     if (printed >= 2u && reads[printed - 2u].reserved == READ_SERIAL_LOW) {
         printed--;
-        values[printed - 1u].u64 |= (uint64_t)reads[printed].bits << 32;
+        values[printed - 1u].u64 = (uint64_t)reads[printed].bits << 32 | reads[printed - 1u].bits;
         types[printed - 1u] = DARAN_TYPE_U64;
     }
     switch ((enum answer)bridge->kind) {
