@@ -18,7 +18,7 @@ run_one() {
   flags=$2
   dir=$src/build/unit-opt-$name
   if ! cmake -S "$src" -B "$dir" -G Ninja -DCMAKE_C_COMPILER=gcc -DCMAKE_BUILD_TYPE=Debug \
-      -DDARAN_SANITIZE=ON -DDARAN_BUILD_SIM=OFF -DDARAN_BUILD_DEMO=OFF \
+      -DDARAN_SANITIZE=ON -DDARAN_BUILD_SIM=OFF -DDARAN_BUILD_DEMO=OFF -DCMAKE_C_FLAGS_DEBUG=-O0 \
       -DCMAKE_C_FLAGS="$flags" > "$dir.configure.log" 2>&1; then
     echo "$name: configure failed (see $dir.configure.log)"
     return 1
