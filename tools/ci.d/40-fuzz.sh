@@ -5,17 +5,17 @@
 # sanitizer report, invariant violation, leak or timeout fails the step.
 #
 # Budget: 8 harnesses, two at a time (the machine has 2 cores): the four
-# established ones (stream line number sim) 40 s each, the four newest (port:
+# established ones (stream line number sim) 30 s each, the four newest (port:
 # the example port's tables; telemetry: reports between requests; can: CAN
-# frames; bridge: lines and frames through a gateway) 60 s each, so about
-# 3 min 20 s of fuzzing plus the build; see docs/security.md.
+# frames; bridge: lines and frames through a gateway) 45 s each, so 2.5 min
+# of fuzzing plus the build, beside CI's other steps; see docs/security.md.
 # FUZZ_SECONDS sets one time for every harness (e.g. FUZZ_SECONDS=1800 for
 # the long run before a release).
 set -u
 
 cd "$(dirname "$0")/../.." || exit 1
 # harness:seconds, run in pairs in this order (pair harnesses of equal time)
-schedule="stream:40 line:40 number:40 sim:40 telemetry:60 port:60 can:60 bridge:60"
+schedule="stream:30 line:30 number:30 sim:30 telemetry:45 port:45 can:45 bridge:45"
 if [ -n "${FUZZ_SECONDS:-}" ]; then
     schedule=$(for e in $schedule; do printf '%s:%s ' "${e%%:*}" "$FUZZ_SECONDS"; done)
     schedule=${schedule% }
