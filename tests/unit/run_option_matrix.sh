@@ -56,8 +56,25 @@ if [ $# -eq 0 ]; then
          no-s-curve "-DDARAN_ENABLE_S_CURVE=0" \
          no-features "-DDARAN_ENABLE_DISCOVERY=0 -DDARAN_ENABLE_TELEMETRY=0 -DDARAN_ENABLE_PORT_COMMANDS=0 -DDARAN_ENABLE_S_CURVE=0"
 fi
+# Two option sets at a time: one configures or links while the other
+# compiles (each build is -j2 already; a set's lines are printed whole).
+out=$(mktemp -d "${TMPDIR:-/tmp}/daran-matrix.XXXXXX")
 while [ $# -ge 2 ]; do
-  run_one "$1" "$2" || failed=$((failed + 1))
+  run_one "$1" "$2" >"$out/a" 2>&1 &
+  a=$!
+  b=""
+  if [ $# -ge 4 ]; then
+    run_one "$3" "$4" >"$out/b" 2>&1 &
+    b=$!
+  fi
+  wait $a || failed=$((failed + 1))
+  cat "$out/a"
+  if [ -n "$b" ]; then
+    wait $b || failed=$((failed + 1))
+    cat "$out/b"
+    shift 2
+  fi
   shift 2
 done
+rm -rf "$out"
 exit $failed
