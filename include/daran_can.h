@@ -153,6 +153,7 @@ typedef struct daran_can_bridge_read {
  * bridge"). Size: sizeof(daran_can_bridge_t). */
 typedef struct daran_can_bridge {
     /** @cond INTERNAL */
+    daran_line_sink_t sink;     /* first: the drive's sink for lines to other ids */
     daran_can_t *can;
     uint32_t asked_ms;          /* when the read now awaited was sent */
     uint8_t node;               /* the drive the pending query is for */

@@ -84,7 +84,24 @@ typedef struct daran_fields {
     uint8_t count; /* fields found, saturating at DARAN_FIELDS_MAX */
 } daran_fields_t;
 struct daran_port_command;
-struct daran_can_bridge;
+struct daran_request;
+struct daran_line_sink;
+/* What takes a drive's lines for other ids instead of the forward hook (a
+ * gateway's bridge, daran_can.h): the sink registers its functions, and the
+ * drive knows nothing else of it. */
+typedef struct daran_line_sink_ops {
+    /* It takes lines now (a bridge: CAN on, C31). */
+    bool (*takes)(const struct daran_line_sink *sink);
+    /* A line checked up to its values, for another drive or, @p broadcast,
+     * for every drive: DARAN_OK when it went out, else the line's error. */
+    daran_result_t (*line)(struct daran_line_sink *sink, const struct daran_request *request,
+                           bool broadcast);
+    /* It still answers an earlier line: the drive reads no further line. */
+    bool (*busy)(struct daran_line_sink *sink);
+} daran_line_sink_ops_t;
+typedef struct daran_line_sink {
+    const daran_line_sink_ops_t *ops;
+} daran_line_sink_t;
 /** @endcond */
 
 /** One drive. Size: sizeof(daran_drive_t), known at compile time. */
@@ -97,7 +114,7 @@ typedef struct daran_drive {
     daran_forward_fn forward;
     void *forward_ctx;
     const struct daran_port_command *port_commands;
-    struct daran_can_bridge *bridge; /* a gateway's bridge (daran_can.h), NULL without one */
+    daran_line_sink_t *sink;  /* takes lines for other ids (a gateway's bridge), NULL without one */
     void *port_ctx;
     uint32_t telemetry_next; /* tick of the next report */
     daran_rx_ring_t rx;

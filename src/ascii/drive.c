@@ -3,7 +3,6 @@
  * daran_process_line() a whole line; each goes through the framer, then the
  * framer's verdict -> checksum -> command table -> addressing -> handler ->
  * reply. This file runs the road; no stage calls back into it. */
-#include "bridge.h"
 #include "checksum.h"
 #include "command.h"
 #include "daran_port.h"
@@ -75,8 +74,8 @@ size_t daran_poll(daran_drive_t *drive)
     size_t left = daran_rx_queued(&drive->rx);
     size_t lines = 0;
     while (left != 0u) {
-#if DARAN_ENABLE_CAN_BRIDGE
-        if (drive->bridge != NULL && daran_bridge_waiting(drive->bridge)) {
+#if DARAN_ENABLE_CAN_BRIDGE /* the one sink the library has */
+        if (drive->sink != NULL && drive->sink->ops->busy(drive->sink)) {
             break; /* a bridged query waits: the next line waits for its answer (C32) */
         }
 #endif
@@ -196,12 +195,13 @@ static daran_result_t address(const daran_line_t *line, const command_of_line_t 
     return id.text != NULL ? daran_field_motor(&id, &request->motor) : DARAN_OK;
 }
 
-#if DARAN_ENABLE_CAN_BRIDGE
-/* A gateway's line for another drive, or its broadcast: checked like a line
- * for this drive, then sent; a broadcast then runs here too (C31, C34). A
- * port command has no CAN form: for another id it is not bridged, a
- * broadcast one runs here alone. *done: nothing is left to do here. */
-static daran_result_t bridge_line(daran_drive_t *drive, const command_of_line_t *found,
+#if DARAN_ENABLE_CAN_BRIDGE /* the one sink the library has */
+/* A line for another drive, or a broadcast, to the drive's sink (a
+ * gateway's bridge): checked like a line for this drive, then handed over;
+ * a broadcast then runs here too (C31, C34). A port command is not the
+ * sink's: for another id it is not bridged, a broadcast one runs here
+ * alone. *done: nothing is left to do here. */
+static daran_result_t sink_line(daran_drive_t *drive, const command_of_line_t *found,
                                   const daran_request_t *request, bool count_ok,
                                   daran_result_t property, bool elsewhere, bool *done)
 {
@@ -216,7 +216,7 @@ static daran_result_t bridge_line(daran_drive_t *drive, const command_of_line_t 
     if (property != DARAN_OK) {
         return property;
     }
-    daran_result_t result = daran_bridge_line(drive->bridge, request, !elsewhere);
+    daran_result_t result = drive->sink->ops->line(drive->sink, request, !elsewhere);
     *done = result != DARAN_OK || elsewhere;
     return result;
 }
@@ -252,9 +252,9 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
     bool elsewhere = request.motor != 0u && request.motor != own;
     bool broadcast = request.motor == 0u && (found.flags & DARAN_CMD_READ) == 0u;
 #if DARAN_ENABLE_CAN_BRIDGE
-    if ((elsewhere || broadcast) && daran_bridge_active(drive)) {
+    if ((elsewhere || broadcast) && drive->sink != NULL && drive->sink->ops->takes(drive->sink)) {
         bool done;
-        result = bridge_line(drive, &found, &request, count_ok, property, elsewhere, &done);
+        result = sink_line(drive, &found, &request, count_ok, property, elsewhere, &done);
         if (done) {
             return result;
         }

@@ -5,7 +5,6 @@
  * waits, daran_poll() reads no further line (C32). Frames go out when the
  * line is taken: a transmit the port refuses is `error: bus error` at once
  * (docs/can.md, "The bridge", says why there is no retry). */
-#include "bridge.h"
 #include "can.h"
 #include "can_codec.h"
 #include "compiler.h"
@@ -34,6 +33,14 @@ static void offer(void *bridge, const daran_can_slot_t *frame);
 static void tick(void *bridge);
 static const daran_can_listener_t bridge_listener = {offer, tick};
 
+/* The drive's side: the bridge is its sink for lines to other ids (its
+ * first member, so a sink is the bridge). */
+static bool takes(const daran_line_sink_t *sink);
+static daran_result_t bridge_line(daran_line_sink_t *sink, const daran_request_t *request,
+                                  bool broadcast);
+static bool waiting(daran_line_sink_t *sink);
+static const daran_line_sink_ops_t bridge_sink = {takes, bridge_line, waiting};
+
 daran_result_t daran_can_bridge_init_checked(daran_can_bridge_t *bridge, daran_can_t *can,
                                              uint32_t build_check)
 {
@@ -48,9 +55,10 @@ daran_result_t daran_can_bridge_init_checked(daran_can_bridge_t *bridge, daran_c
     /* nothing pending; every other member is written before it is read */
     bridge->count = 0;
     bridge->can = can;
+    bridge->sink.ops = &bridge_sink;
     can->listener = &bridge_listener;
     can->listener_ctx = bridge;
-    can->drive->bridge = bridge;
+    can->drive->sink = &bridge->sink;
     return DARAN_OK;
 }
 
@@ -59,9 +67,9 @@ bool daran_can_bridge_busy(const daran_can_bridge_t *bridge)
     return bridge->count != 0u;
 }
 
-bool daran_bridge_active(const daran_drive_t *drive)
+static bool takes(const daran_line_sink_t *sink)
 {
-    return drive->bridge != NULL && drive->bridge->can->enabled;
+    return ((const daran_can_bridge_t *)sink)->can->enabled != 0u;
 }
 
 /* A bridged line's frame: one the port refuses is the line's bus error (C33). */
@@ -235,12 +243,8 @@ static void offer(void *context, const daran_can_slot_t *frame)
     finish(bridge, DARAN_OK);
 }
 
-static void tick(void *bridge)
-{
-    (void)daran_bridge_waiting(bridge);
-}
-
-bool daran_bridge_waiting(daran_can_bridge_t *bridge)
+/* Advance a pending query (its timeout): true while it still waits. */
+static bool pending(daran_can_bridge_t *bridge)
 {
     if (bridge->count == 0u) {
         return false;
@@ -386,9 +390,25 @@ static DARAN_NOINLINE daran_result_t send_line(daran_can_bridge_t *bridge,
     }
 }
 
-daran_result_t daran_bridge_line(daran_can_bridge_t *bridge, const daran_request_t *request,
-                                 bool broadcast)
+static void tick(void *bridge)
 {
+    (void)pending(bridge);
+}
+
+static bool waiting(daran_line_sink_t *sink)
+{
+    return pending((daran_can_bridge_t *)sink);
+}
+
+/* Send @p request (checked by the dispatcher up to its values) as frames to
+ * its drive, or to node 0 when @p broadcast. DARAN_OK when it went out (a
+ * query then answers later), else the error the line answers, with nothing
+ * sent. A broadcast line that must not go out (a node id write, C34)
+ * returns DARAN_OK without sending. */
+static daran_result_t bridge_line(daran_line_sink_t *sink, const daran_request_t *request,
+                                  bool broadcast)
+{
+    daran_can_bridge_t *bridge = (daran_can_bridge_t *)sink;
     if (bridge->count != 0u) {
         return DARAN_ERR_BUS_ERROR; /* one bridged request at a time (C32) */
     }
