@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# ci-beside: 40-fuzz.sh
+# ci-weight: 60
+# ci-after: 05-host.sh
 # CI step: the soak (tools/soak, docs/reliability.md) in its short form,
 # about 60 s of wall time:
 #   1. 46 s of the three clients against daran-sim --nvm under bus faults,
@@ -7,8 +8,8 @@
 #   2. 8 s with three defects made on purpose (a wrong value, a relative
 #      move sent twice, a damaged NVM): must fail, naming each of them, so
 #      that the checks of step 1 are known to bite.
-# Uses build/host's daran-sim (built by the host workflow before the ci.d
-# steps), building it only when it is missing. SOAK_SEED picks the seed
+# Uses build/host's daran-sim (05-host.sh builds it), building it only when
+# it is missing. SOAK_SEED picks the seed
 # (default 1).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
