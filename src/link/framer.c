@@ -6,7 +6,7 @@
  * bytes are decided here, once. The checksum's XOR is not taken here: only
  * a line with a '*' needs it, and checksum.c takes it four bytes a step.
  * The framer hands back how far it got and whether a line ended; drive.c
- * runs the line (docs/performance.md has the designs measured).
+ * runs the line (CHANGELOG.md, issue 20, has the designs measured).
  *
  * The pass keeps its state (field count, where the field began, the '*',
  * the flags) in locals and writes it back once: every byte stored into the

@@ -88,9 +88,9 @@ static void test_line_of_exactly_128_bytes_is_accepted(void)
     ASSERT_REPLY(m, "0 0\n");
 }
 
-/* Its line end comes after the room is full, where the framer ends the last
- * field on its own road: a ninth field there still only counts as one too
- * many, and the command word keeps its length. */
+/* Its line end comes after the room is full, where the framer skips the
+ * overlong bytes before it ends the last field: a ninth field there still
+ * only counts as one too many, and the command word keeps its length. */
 static void test_a_full_length_line_whose_last_byte_ends_a_ninth_field_has_too_many(void)
 {
     mock_t *m = mock_new();
