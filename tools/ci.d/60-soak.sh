@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ci-weight: 60
+# ci-light
 # ci-after: 05-host.sh
 # CI step: the soak (tools/soak, docs/reliability.md) in its short form,
 # about 60 s of wall time:
