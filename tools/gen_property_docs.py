@@ -9,6 +9,9 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from generated_doc import write_or_check  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LIST = os.path.join(ROOT, "include", "daran_properties.h")
 OUT = os.path.join(ROOT, "docs", "properties.md")
@@ -58,17 +61,7 @@ def generate():
 
 
 def main():
-    text = generate()
-    if "--check" in sys.argv[1:]:
-        current = open(OUT, encoding="utf-8").read() if os.path.exists(OUT) else ""
-        if current != text:
-            print("docs/properties.md is stale: run tools/gen_property_docs.py")
-            return 1
-        print("docs/properties.md is current")
-        return 0
-    with open(OUT, "w", encoding="utf-8") as f:
-        f.write(text)
-    return 0
+    return write_or_check(OUT, generate(), 'docs/properties.md', 'tools/gen_property_docs.py')
 
 
 if __name__ == "__main__":

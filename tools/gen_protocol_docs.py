@@ -10,6 +10,9 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from generated_doc import write_or_check  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 HEADER = os.path.join(ROOT, "include", "daran_protocol.h")
 PAGE = os.path.join(ROOT, "docs", "protocol.md")
@@ -73,17 +76,7 @@ def generate(page):
 
 
 def main():
-    page = open(PAGE, encoding="utf-8").read()
-    text = generate(page)
-    if "--check" in sys.argv[1:]:
-        if page != text:
-            print("docs/protocol.md's protocol table is stale: run tools/gen_protocol_docs.py")
-            return 1
-        print("docs/protocol.md's protocol table is current")
-        return 0
-    with open(PAGE, "w", encoding="utf-8") as f:
-        f.write(text)
-    return 0
+    return write_or_check(PAGE, generate(open(PAGE, encoding="utf-8").read()), "docs/protocol.md's protocol table", 'tools/gen_protocol_docs.py')
 
 
 if __name__ == "__main__":
