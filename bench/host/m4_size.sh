@@ -13,11 +13,11 @@ out=${1:-build/bench/m4}
 mkdir -p "$out"
 cc=arm-none-eabi-gcc
 cpu="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
-cflags="$cpu -Os -std=c99 -ffunction-sections -fdata-sections -fno-math-errno -fno-tree-loop-distribute-patterns -Iinclude -Isrc -I$out/generated -Ibench/baseline"
+cflags="$cpu -Os -std=c99 -ffunction-sections -fdata-sections -fno-math-errno -fno-tree-loop-distribute-patterns -Iinclude -Isrc $(for room in src/*/; do printf -- "-I%s " "${room%/}"; done)-I$out/generated -Ibench/baseline"
 ldflags="$cpu --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections"
 # The core's sources: the DARAN_CORE_SOURCES list of cmake/DaranAddLibrary.cmake.
 core_sources=$(sed -n '/PROPERTY DARAN_CORE_SOURCES/,/)/p' cmake/DaranAddLibrary.cmake |
-  grep -o '[a-z_0-9]*\.c' | sed 's|^|src/|')
+  grep -o '[a-z_0-9/]*\.c' | sed 's|^|src/|')
 if [ -z "$core_sources" ]; then
   echo "m4_size.sh: no core sources found in cmake/DaranAddLibrary.cmake" >&2
   exit 1

@@ -15,10 +15,10 @@ cd "$(dirname "$0")/../.."
 out=${1:-build/bench/m0}
 cc=arm-none-eabi-gcc
 cpu="-mcpu=cortex-m0 -mthumb -mfloat-abi=soft"
-cflags="$cpu -Os -std=c11 -g -Wall -Wextra -ffunction-sections -fdata-sections -fno-math-errno -fno-tree-loop-distribute-patterns -DNDEBUG -Iinclude -Isrc -I$out/generated"
+cflags="$cpu -Os -std=c11 -g -Wall -Wextra -ffunction-sections -fdata-sections -fno-math-errno -fno-tree-loop-distribute-patterns -DNDEBUG -Iinclude -Isrc $(for room in src/*/; do printf -- "-I%s " "${room%/}"; done)-I$out/generated"
 # The core's sources: the DARAN_CORE_SOURCES list of cmake/DaranAddLibrary.cmake.
 core_sources=$(sed -n '/PROPERTY DARAN_CORE_SOURCES/,/)/p' cmake/DaranAddLibrary.cmake |
-  grep -o '[a-z_0-9]*\.c' | sed 's|^|src/|')
+  grep -o '[a-z_0-9/]*\.c' | sed 's|^|src/|')
 if [ -z "$core_sources" ]; then
   echo "bench/m0/build.sh: no core sources found in cmake/DaranAddLibrary.cmake" >&2
   exit 1
