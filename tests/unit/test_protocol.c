@@ -29,7 +29,7 @@ typedef struct row {
     int max_fields;
     int can_form;
     const char *help;
-    int optional_fields; /* OPT_ fields */
+    int optional_fields; /* OPT_ fields: the most fields less the fewest */
 } row_t;
 
 #define IN_BUILD_ALWAYS 1
@@ -47,19 +47,6 @@ typedef struct row {
 #define READS_WRITE 0
 #define READS_QUERY 1
 #define READS_READ 1
-#define OPTIONAL_NONE 0
-#define OPTIONAL_REQ_ID 0
-#define OPTIONAL_REQ_F32 0
-#define OPTIONAL_REQ_MODE 0
-#define OPTIONAL_REQ_FLAG 0
-#define OPTIONAL_REQ_PATH 0
-#define OPTIONAL_REQ_VALUE 0
-#define OPTIONAL_REQ_WORD 0
-#define OPTIONAL_OPT_ID 1
-#define OPTIONAL_OPT_F32 1
-#define OPTIONAL_OPT_MODE 1
-#define OPTIONAL_OPT_FLAG 1
-#define OPTIONAL_OPT_PATH 1
 #define ROW(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, f3, f4, f5, \
             f6)                                                                                \
     {#name,                                                                                    \
@@ -72,8 +59,8 @@ typedef struct row {
      DARAN_PROTOCOL_MAX_FIELDS(f1, f2, f3, f4, f5, f6),                                        \
      DARAN_CAN_FORM_##can,                                                                     \
      help,                                                                                     \
-     OPTIONAL_##f1 + OPTIONAL_##f2 + OPTIONAL_##f3 + OPTIONAL_##f4 + OPTIONAL_##f5 +           \
-         OPTIONAL_##f6},
+     DARAN_PROTOCOL_MAX_FIELDS(f1, f2, f3, f4, f5, f6) -                                       \
+         DARAN_PROTOCOL_MIN_FIELDS(f1, f2, f3, f4, f5, f6)},
 static const row_t rows[] = {DARAN_PROTOCOL_COMMANDS(ROW)};
 #undef ROW
 #define ROW_COUNT (sizeof rows / sizeof rows[0])
