@@ -5,6 +5,6 @@
  * what those hooks cost. Never linked into anything. */
 #include "handlers.h" /* declared before the macro below replaces discovery */
 
-#define daran_cmd_discovery(drive, request) ((void)(request), DARAN_ERR_INVALID_VALUE)
+#define daran_discovery(drive, request, bridged) ((void)(request), (void)(bridged), DARAN_ERR_INVALID_VALUE)
 #define port_command_count port_command_count * 0u
 #include "../../src/ascii/command_table.c"
