@@ -33,6 +33,7 @@ set_property(GLOBAL PROPERTY DARAN_CORE_SOURCES
   ascii/commands_system.c ascii/discovery.c ascii/port_commands.c ascii/telemetry.c
   ascii/reply.c
   request/request_preset.c request/request_property.c request/request_state.c request/hal.c
+  request/hal_can.c
   can/can.c can/can_address.c can/can_bridge.c can/can_codec.c can/can_encode.c can/can_ring.c
   text/number.c text/text.c text/result.c
   table/property_table.c

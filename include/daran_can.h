@@ -7,8 +7,9 @@
  * state rule and HAL call is the line's. CAN has no error reply: a frame the
  * drive refuses has no effect and gets no answer.
  *
- * The port owns a daran_can_t beside its daran_drive_t, gives it a transmit
- * function and its millisecond clock (daran_can_port_t), hands it every
+ * The port owns a daran_can_t beside its daran_drive_t (whose port
+ * description, daran_hal_t, gives the CAN transmit and the millisecond
+ * clock), hands it every
  * received frame (daran_can_receive(), from an interrupt or a polling loop)
  * and calls daran_can_poll() from the thread that calls daran_poll(): that is
  * where frames run, replies and status frames go out, the heartbeat is sent
@@ -44,19 +45,6 @@ typedef struct daran_can_frame {
     uint8_t data[8]; /**< data bytes, data[0] first on the bus */
 } daran_can_frame_t;
 
-/** What the port gives the CAN front end. */
-typedef struct daran_can_port {
-    /** Queue @p frame for transmission: true when the controller took it,
-     * false when no transmit buffer is free or the controller is bus-off. */
-    bool (*send)(void *ctx, const daran_can_frame_t *frame);
-    /** Milliseconds since boot; wraps at 2^32. */
-    uint32_t (*now_ms)(void *ctx);
-    /** Optional (NULL: ignored): the system sub-codes the library does not
-     * carry out itself, 0x00 (restore initial configuration) and 0x07
-     * (firmware-update mode), with their two 16-bit data fields (C19). */
-    void (*system_hook)(void *ctx, uint32_t subcode, uint16_t data1, uint16_t data2);
-} daran_can_port_t;
-
 /** @cond INTERNAL  The members below are the library's; read none of them. */
 typedef struct daran_can_slot {
     uint16_t id;     /* standard id: frames of another shape never reach the ring */
@@ -81,8 +69,6 @@ typedef struct daran_can {
     daran_drive_t *drive;
     const daran_can_listener_t *listener; /* NULL without one */
     void *listener_ctx;
-    const daran_can_port_t *port;
-    void *port_ctx;
     daran_atomic_u16_t head;    /* written by daran_can_receive() only */
     daran_atomic_u16_t tail;    /* written by daran_can_poll() only */
     daran_atomic_u32_t dropped; /* frames lost to a full ring; the producer's */
@@ -98,25 +84,26 @@ typedef struct daran_can {
     /** @endcond */
 } daran_can_t;
 
-/** Bind a CAN front end to its drive (initialised with daran_init()) and
- * its port, and reset it. Reads `can.config.protocol` once: 0 leaves the
- * front end silent (it takes frames and drops them) until the next
- * daran_can_init(), as a drive reads it at boot (C15).
- * Returns DARAN_ERR_BAD_ARGUMENT when a pointer or port->send / now_ms is
- * NULL, and DARAN_ERR_BUILD_MISMATCH when the caller was compiled with
- * other options (another DARAN_CAN_RX_FRAMES, say) or another property table
- * than the library: the instance is then untouched and unusable.
- * O(sizeof *can). */
-#define daran_can_init(can, drive, port, port_ctx)                                          \
-    daran_can_init_checked((can), (drive), (port), (port_ctx), DARAN_BUILD_CHECK(daran_can_t))
+/** Bind a CAN front end to its drive (initialised with daran_init(): the
+ * drive's port description gives the transmit and the clock, can_send and
+ * now_ms, and the optional can_system hook), and reset it. Reads
+ * `can.config.protocol` once: 0 leaves the front end silent (it takes
+ * frames and drops them) until the next daran_can_init(), as a drive reads
+ * it at boot (C15).
+ * Returns DARAN_ERR_BAD_ARGUMENT when a pointer is NULL, the drive was not
+ * initialised or its port has no can_send or now_ms, and
+ * DARAN_ERR_BUILD_MISMATCH when the caller was compiled with other options
+ * (another DARAN_CAN_RX_FRAMES, say) or another property table than the
+ * library: the instance is then untouched and unusable. O(sizeof *can). */
+#define daran_can_init(can, drive) \
+    daran_can_init_checked((can), (drive), DARAN_BUILD_CHECK(daran_can_t))
 
 /** What daran_can_init() calls, with the caller's
  * DARAN_BUILD_CHECK(daran_can_t) (daran_build.h): the library's ring has
  * its own DARAN_CAN_RX_FRAMES slots, so an instance laid out by another
  * build would be written past its end. */
 DARAN_NODISCARD daran_result_t daran_can_init_checked(daran_can_t *can, daran_drive_t *drive,
-                                                      const daran_can_port_t *port,
-                                                      void *port_ctx, uint32_t build_check);
+                                                      uint32_t build_check);
 
 /** Producer side: queue one received frame. Safe in an interrupt (one
  * producer). Frames that are not 8-byte standard data frames are dropped
@@ -125,7 +112,7 @@ DARAN_NODISCARD daran_result_t daran_can_init_checked(daran_can_t *can, daran_dr
 bool daran_can_receive(daran_can_t *can, const daran_can_frame_t *frame);
 
 /** Consumer side: run every queued frame (replies go out through
- * port->send), then the node guard and the heartbeat. Call it once per
+ * the port's can_send), then the node guard and the heartbeat. Call it once per
  * control tick, from the thread that calls daran_poll(). Returns the
  * number of frames taken. Never blocks. */
 size_t daran_can_poll(daran_can_t *can);

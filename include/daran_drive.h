@@ -25,17 +25,6 @@
 extern "C" {
 #endif
 
-/** Receives one whole reply line (line end included; never NUL-terminated).
- * Called from daran_poll() / daran_process_line(). */
-typedef void (*daran_write_fn)(void *ctx, const char *line, size_t len);
-
-/** Receives a line the drive does not execute alone: a line addressed to
- * another motor id, or a broadcast (id 0) line that is not a read. The line is
- * as received, checksum field included, without its `\n` (a CRLF sender's
- * `\r` stays: it is part of the line). */
-typedef void (*daran_forward_fn)(void *ctx, uint8_t motor_id, const char *line,
-                                 size_t len);
-
 /** @cond INTERNAL  The members below are the library's; read none of them. */
 /* The ring's indices are shared between the interrupt (producer) and the
  * main loop (consumer): C11 atomics with acquire/release ordering where the
@@ -108,14 +97,9 @@ typedef struct daran_line_sink {
 typedef struct daran_drive {
     /** @cond INTERNAL */
     const daran_hal_t *hal;
-    void *hal_ctx;
-    daran_write_fn write;
-    void *write_ctx;
-    daran_forward_fn forward;
-    void *forward_ctx;
+    void *ctx;               /* the one context every HAL function gets */
     const struct daran_port_command *port_commands;
     daran_line_sink_t *sink;  /* takes lines for other ids (a gateway's bridge), NULL without one */
-    void *port_ctx;
     uint32_t telemetry_next; /* tick of the next report */
     daran_rx_ring_t rx;
     uint16_t line_len;       /* bytes of the current line so far (saturates past DARAN_LINE_MAX) */
@@ -133,16 +117,17 @@ typedef struct daran_drive {
     /** @endcond */
 } daran_drive_t;
 
-/** Bind an instance to its HAL and reply sink and reset it (empty receive
- * ring, no partial line, no preset). @p hal must stay valid while the instance
- * is used; every member of it must be set.
- * O(sizeof *drive). Returns DARAN_ERR_BAD_ARGUMENT if a pointer or HAL member
- * is NULL, and DARAN_ERR_BUILD_MISMATCH if the caller was compiled with other
- * options or another property table than the library (see
- * daran_init_checked()); the instance is then unusable. */
-#define daran_init(drive, hal, hal_ctx, write, write_ctx)                                  \
-    daran_init_checked((drive), DARAN_BUILD_CHECK(daran_drive_t), (hal), (hal_ctx),        \
-                       (write), (write_ctx))
+/** Bind an instance to its port (daran_hal_t: functions and reply writer)
+ * and reset it (empty receive ring, no partial line, no preset). @p hal
+ * must stay valid while the instance is used; @p ctx is given to every one
+ * of its functions.
+ * O(sizeof *drive). Returns DARAN_ERR_BAD_ARGUMENT if a pointer or a
+ * required HAL member (get, set, move, action, write) is NULL, and
+ * DARAN_ERR_BUILD_MISMATCH if the caller was compiled with other options or
+ * another property table than the library (see daran_init_checked()); the
+ * instance is then unusable. */
+#define daran_init(drive, hal, ctx) \
+    daran_init_checked((drive), DARAN_BUILD_CHECK(daran_drive_t), (hal), (ctx))
 
 /** What daran_init() calls, with the caller's DARAN_BUILD_CHECK(daran_drive_t)
  * (daran_build.h): a program compiled with another options header than the
@@ -151,12 +136,7 @@ typedef struct daran_drive {
  * mean other properties to the library; here it gets
  * DARAN_ERR_BUILD_MISMATCH instead, before anything is touched. */
 DARAN_NODISCARD daran_result_t daran_init_checked(daran_drive_t *drive, uint32_t build_check,
-                                                  const daran_hal_t *hal, void *hal_ctx,
-                                                  daran_write_fn write, void *write_ctx);
-
-/** Register (or, with NULL, remove) the forward hook of a CAN gateway.
- * O(1), cannot fail. */
-void daran_set_forward(daran_drive_t *drive, daran_forward_fn forward, void *ctx);
+                                                  const daran_hal_t *hal, void *ctx);
 
 /** Producer side: queue one received byte. Safe in an interrupt (one producer).
  * O(1). Returns false when the ring was full: the byte is lost, the line it

@@ -1,5 +1,8 @@
 /** @file daran_hal.h
- * The hardware layer (HAL): what a port gives the protocol core.
+ * The hardware layer (HAL): everything a drive calls out to, given by the
+ * port as one description (daran_hal_t) with one context pointer. Its
+ * property, motion and action functions, its reply writer, its forward hook,
+ * its clock and its CAN transmit all take that same context.
  *
  * The core never touches hardware. It validates a whole line first, then
  * makes at most one HAL setter, move or action call for it (plus a watchdog
@@ -17,6 +20,8 @@
 #ifndef DARAN_HAL_H
 #define DARAN_HAL_H
 
+#include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "daran_properties.h"
@@ -131,7 +136,22 @@ typedef enum daran_action {
                                      expiry (idle damping where the port has it) */
 } daran_action_t;
 
-/** The port's functions. All four are required. */
+struct daran_can_frame; /* daran_can.h */
+
+/** Receives one whole reply line (line end included; never NUL-terminated).
+ * Called from daran_poll() / daran_process_line(). */
+typedef void (*daran_write_fn)(void *ctx, const char *line, size_t len);
+
+/** Receives a line the drive does not execute alone: a line addressed to
+ * another motor id, or a broadcast (id 0) line that is not a read. The line is
+ * as received, checksum field included, without its `\n` (a CRLF sender's
+ * `\r` stays: it is part of the line). */
+typedef void (*daran_forward_fn)(void *ctx, uint8_t motor_id, const char *line, size_t len);
+
+/** The port's description: every function takes the context given to
+ * daran_init(). get, set, move, action and write are required; forward and
+ * can_system are optional (NULL); now_ms and can_send are required by
+ * daran_can_init() and unused without a CAN front end. */
 typedef struct daran_hal {
     /** Read a property. Must have no side effects. */
     daran_result_t (*get)(void *ctx, daran_prop_t prop, daran_value_t *out);
@@ -143,6 +163,23 @@ typedef struct daran_hal {
     daran_result_t (*move)(void *ctx, const daran_move_t *move);
     /** Carry out an action. */
     daran_result_t (*action)(void *ctx, daran_action_t action);
+    /** Send a reply line (the link's transmit). */
+    daran_write_fn write;
+    /** Optional (NULL: such lines are dropped): a CAN gateway's hook for
+     * lines to other ids. A bridge (daran_can_bridge_init()) takes them
+     * instead while it is on. */
+    daran_forward_fn forward;
+    /** Milliseconds since boot; wraps at 2^32. Read by the CAN front end
+     * and the bridge. */
+    uint32_t (*now_ms)(void *ctx);
+    /** Queue a CAN frame for transmission: true when the controller took
+     * it, false when no transmit buffer is free or the controller is
+     * bus-off. */
+    bool (*can_send)(void *ctx, const struct daran_can_frame *frame);
+    /** Optional (NULL: ignored): the CAN system sub-codes the library does
+     * not carry out itself, 0x00 (restore initial configuration) and 0x07
+     * (firmware-update mode), with their two 16-bit data fields (C19). */
+    void (*can_system)(void *ctx, uint32_t subcode, uint16_t data1, uint16_t data2);
 } daran_hal_t;
 
 #ifdef __cplusplus

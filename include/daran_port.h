@@ -9,7 +9,8 @@
  * the HAL's get/set with their own DARAN_PROP_<ID>.
  *
  * Its commands are a table of daran_port_command_t in the port's memory
- * (usually `static const`), given once with daran_set_port_commands(). The
+ * (usually `static const`), given once with daran_set_port_commands(); their handlers get the
+ * drive's one context (daran_init()). The
  * core frames, checks the checksum, the motor id and the number of values of
  * a port command exactly as for its own, then calls the handler, which reads
  * every value with the daran_args_*() parsers (the library's grammar and
@@ -31,10 +32,9 @@ extern "C" {
 /** The values of a port command's line, for the daran_args_*() parsers. */
 typedef struct daran_request daran_args_t;
 
-/** A port command's handler. @p ctx is the one given to
- * daran_set_port_commands(). Return DARAN_OK (replies, if any, already sent
- * with daran_reply()) or the error to answer. Runs in daran_poll()'s
- * context. */
+/** A port command's handler. @p ctx is the drive's (daran_init()).
+ * Return DARAN_OK (replies, if any, already sent with daran_reply()) or
+ * the error to answer. Runs in daran_poll()'s context. */
 typedef daran_result_t (*daran_port_handler_fn)(daran_drive_t *drive, const daran_args_t *args,
                                                 void *ctx);
 
@@ -63,10 +63,14 @@ typedef struct daran_port_command {
  * DARAN_ERR_BAD_ARGUMENT and the drive keeps what it had. O(count^2). */
 DARAN_NODISCARD daran_result_t daran_set_port_commands(daran_drive_t *drive,
                                                        const daran_port_command_t *commands,
-                                                       size_t count, void *ctx);
+                                                       size_t count);
 
 /** How many values follow the id (between min_values and max_values). */
 size_t daran_args_count(const daran_args_t *args);
+/** The line's command word (not NUL-terminated), its length in @p len: a
+ * handler that serves several words, or a shim that hands a command on to
+ * the port's own handler (the test kit's), tells them apart by it. */
+const char *daran_args_word(const daran_args_t *args, size_t *len);
 /** The id the line was sent to: the drive's own, or 0 (every drive). */
 uint8_t daran_args_motor(const daran_args_t *args);
 /** Value @p index (0 = the first after the id) as a float32, correctly

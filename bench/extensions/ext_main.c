@@ -49,7 +49,6 @@ static daran_result_t ext_action(void *ctx, daran_action_t action)
     return DARAN_OK;
 }
 
-static const daran_hal_t ext_hal = {ext_get, ext_set, ext_move, ext_action};
 
 static volatile unsigned reply_lines;
 
@@ -60,6 +59,9 @@ static void count_reply(void *ctx, const char *line, size_t len)
     (void)len;
     reply_lines = reply_lines + 1u;
 }
+
+static const daran_hal_t ext_hal = {
+    .get = ext_get, .set = ext_set, .move = ext_move, .action = ext_action, .write = count_reply};
 
 /* The chopper's driver: stores the frequency. */
 static float chopper_hz;
@@ -149,7 +151,7 @@ int main(void)
     values[DARAN_PROP_TRAJECTORY_DONE].u32 = 1u;
     values[DARAN_PROP_TELEMETRY_PERIOD].f32 = 0.0f;
     values[DARAN_PROP_TELEMETRY_FIELDS].u32 = 3u; /* the default */
-    if (daran_init(&drive, &ext_hal, NULL, count_reply, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &ext_hal, NULL) != DARAN_OK) {
         daran_board_exit(1);
     }
     (void)daran_board_irq_save(); /* nothing may run between markers but the step */

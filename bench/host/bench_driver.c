@@ -32,25 +32,6 @@
 #include "bench_hal.h"
 #include "daran_drive.h"
 
-typedef struct sink {
-    FILE *trace;
-    unsigned long bytes;
-    const unsigned long *line;
-} sink_t;
-
-static void sink_write(void *ctx, const char *text, size_t len)
-{
-    sink_t *sink = ctx;
-    sink->bytes += len;
-    if (sink->trace != NULL) {
-        /* the line without its end ("\n", or "\r\n" with DARAN_REPLY_CRLF) */
-        size_t shown = len > 0 && text[len - 1] == '\n' ? len - 1 : len;
-        if (shown > 0 && text[shown - 1] == '\r') {
-            shown--;
-        }
-        fprintf(sink->trace, "%lu reply %.*s\n", *sink->line, (int)shown, text);
-    }
-}
 
 static char *read_all(const char *path, size_t *size)
 {
@@ -235,24 +216,21 @@ int main(int argc, char **argv)
         return 0;
     }
 
-    unsigned long current = 0;
-    sink_t sink = {trace ? stdout : NULL, 0, &current};
     bench_hal_state_t hal_state;
     bench_hal_reset(&hal_state, trace ? stdout : NULL);
     static daran_drive_t drive;
     static baseline_t baseline;
     static handwritten_t handwritten;
-    if (daran_init(&drive, &bench_hal, &hal_state, sink_write, &sink) != DARAN_OK) {
+    if (daran_init(&drive, &bench_hal, &hal_state) != DARAN_OK) {
         return 2;
     }
-    baseline_init(&baseline, &bench_hal, &hal_state, sink_write, &sink);
-    handwritten_init(&handwritten, &bench_hal, &hal_state, sink_write, &sink);
+    baseline_init(&baseline, &bench_hal, &hal_state, bench_write, &hal_state);
+    handwritten_init(&handwritten, &bench_hal, &hal_state, bench_write, &hal_state);
 
     unsigned long errors = 0;
     for (unsigned long r = 0; r < repeat; r++) {
         for (size_t i = 0; i < count; i++) {
-            current = (unsigned long)i + 1;
-            hal_state.line = current;
+            hal_state.line = (unsigned long)i + 1;
             if (strcmp(mode, "ours") == 0) {
                 errors += daran_process_line(&drive, lines[i].text, lines[i].len) != DARAN_OK;
             } else if (strcmp(mode, "baseline") == 0) {
@@ -285,7 +263,7 @@ int main(int argc, char **argv)
     }
     if (!trace) {
         printf("%s: %lu lines x %lu, %lu answered with an error, %lu reply bytes\n", mode,
-               (unsigned long)count, repeat, errors, sink.bytes);
+               (unsigned long)count, repeat, errors, hal_state.reply_bytes);
     }
     free(lines);
     free(text);

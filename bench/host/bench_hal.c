@@ -102,4 +102,22 @@ static daran_result_t bench_action(void *ctx, daran_action_t action)
     return DARAN_OK;
 }
 
-const daran_hal_t bench_hal = {bench_get, bench_set, bench_move, bench_action};
+void bench_write(void *ctx, const char *text, size_t len)
+{
+    bench_hal_state_t *state = ctx;
+    state->reply_bytes += len;
+    if (state->trace != NULL) {
+        /* the line without its end ("\n", or "\r\n" with DARAN_REPLY_CRLF) */
+        size_t shown = len > 0 && text[len - 1] == '\n' ? len - 1 : len;
+        if (shown > 0 && text[shown - 1] == '\r') {
+            shown--;
+        }
+        fprintf(state->trace, "%lu reply %.*s\n", state->line, (int)shown, text);
+    }
+}
+
+const daran_hal_t bench_hal = {.get = bench_get,
+                               .set = bench_set,
+                               .move = bench_move,
+                               .action = bench_action,
+                               .write = bench_write};

@@ -53,8 +53,6 @@ static daran_result_t m4_action(void *ctx, daran_action_t action)
     return DARAN_OK;
 }
 
-static const daran_hal_t hal = {m4_get, m4_set, m4_move, m4_action};
-
 static void uart_write(void *ctx, const char *line, size_t len)
 {
     (void)ctx;
@@ -62,6 +60,8 @@ static void uart_write(void *ctx, const char *line, size_t len)
         UART_DATA = (uint8_t)line[i];
     }
 }
+
+static const daran_hal_t hal = {m4_get, m4_set, m4_move, m4_action, uart_write};
 
 #if BENCH_PARSER == 1
 static daran_drive_t drive;
@@ -80,7 +80,7 @@ int main(void)
     values[DARAN_PROP_CAN_NODE_ID].u32 = 1;
     values[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
 #if BENCH_PARSER == 1
-    if (daran_init(&drive, &hal, NULL, uart_write, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &hal, NULL) != DARAN_OK) {
         return 1;
     }
 #elif BENCH_PARSER == 2

@@ -81,14 +81,15 @@ static daran_result_t m0_action(void *ctx, daran_action_t action)
     return DARAN_OK;
 }
 
-static const daran_hal_t m0_hal = {m0_get, m0_set, m0_move, m0_action};
-
 static void drop_reply(void *ctx, const char *line, size_t len)
 {
     (void)ctx;
     (void)line;
     (void)len;
 }
+
+static const daran_hal_t m0_hal = {
+    .get = m0_get, .set = m0_set, .move = m0_move, .action = m0_action, .write = drop_reply};
 
 /* The plugin watches this function's entry. */
 void daran_perf_mark(void) __attribute__((noinline));
@@ -128,7 +129,7 @@ int main(void)
     values[DARAN_PROP_CAN_NODE_ID].u32 = 1u;
     values[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
     values[DARAN_PROP_UART_BAUDRATE].u32 = 115200u;
-    if (daran_init(&drive, &m0_hal, NULL, drop_reply, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &m0_hal, NULL) != DARAN_OK) {
         m0_exit(1);
     }
     for (size_t i = 0; i < LINE_COUNT; i++) {

@@ -272,4 +272,4 @@ static daran_result_t action(void *ctx, daran_action_t which)
     }
 }
 
-const daran_hal_t acme_hal = {get, set, move, action};
+const daran_hal_t acme_hal = {.get = get, .set = set, .move = move, .action = action};

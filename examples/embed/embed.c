@@ -52,12 +52,13 @@ static void reply(void *ctx, const char *line, size_t len)
 
 int main(void)
 {
-    static const daran_hal_t hal = {get, set, move, action};
+    static const daran_hal_t hal = {.get = get, .set = set, .move = move, .action = action,
+                                    .write = reply};
     static daran_drive_t drive; /* the caller owns all memory; the library never allocates */
     PROP(CAN_NODE_ID).u32 = 1;
     PROP(CURRENT_STATE).u32 = DARAN_STATE_CLOSED_LOOP;
     PROP(VBUS_VOLTAGE).f32 = 24.0f;
-    if (daran_init(&drive, &hal, NULL, reply, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &hal, NULL) != DARAN_OK) {
         return 1;
     }
     for (int c; (c = getchar()) != EOF;) {

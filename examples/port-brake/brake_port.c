@@ -16,7 +16,7 @@ bool brake_chopper_hz_ok(float hz)
  * succeeds. */
 static daran_result_t command_sb(daran_drive_t *drive, const daran_args_t *args, void *ctx)
 {
-    const brake_chopper_t *chopper = ctx;
+    const brake_chopper_t *chopper = brake_chopper_of(ctx);
     float hz;
     (void)drive;
     daran_result_t result = daran_args_f32(args, 0, &hz);
@@ -35,7 +35,7 @@ const daran_port_command_t brake_commands[] = {
 };
 const size_t brake_command_count = sizeof brake_commands / sizeof brake_commands[0];
 
-daran_result_t brake_port_attach(daran_drive_t *drive, brake_chopper_t *chopper)
+daran_result_t brake_port_attach(daran_drive_t *drive)
 {
-    return daran_set_port_commands(drive, brake_commands, brake_command_count, chopper);
+    return daran_set_port_commands(drive, brake_commands, brake_command_count);
 }

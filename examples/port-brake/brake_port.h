@@ -4,8 +4,8 @@
  * (brake_commands), its handler parses every value with the core's
  * daran_args_*() parsers and checks the range before it calls the chopper's
  * driver once. The driver is the port's own hardware layer: the example's
- * printing HAL (main.c) and the fuzz harness (tests/fuzz/fuzz_port.c) each
- * give one. */
+ * printing HAL (main.c), its test and the fuzz harness
+ * (tests/fuzz/fuzz_port.c) each give one, through brake_chopper_of(). */
 #ifndef BRAKE_PORT_H
 #define BRAKE_PORT_H
 
@@ -32,9 +32,13 @@ extern const size_t brake_command_count;
 /** Does the chopper take @p hz? (0..BRAKE_CHOPPER_HZ_MAX; NaN does not.) */
 bool brake_chopper_hz_ok(float hz);
 
-/** Give @p drive the port's commands, their handler driving @p chopper
- * (which must outlive the drive). DARAN_ERR_BAD_ARGUMENT from
+/** The chopper of the drive whose context (daran_init()'s, which a port
+ * command's handler gets) is @p ctx. Defined by the program: the handler
+ * finds its hardware through the port's own context, as the HAL does. */
+brake_chopper_t *brake_chopper_of(void *ctx);
+
+/** Give @p drive the port's commands. DARAN_ERR_BAD_ARGUMENT from
  * daran_set_port_commands() if the table were malformed. */
-DARAN_NODISCARD daran_result_t brake_port_attach(daran_drive_t *drive, brake_chopper_t *chopper);
+DARAN_NODISCARD daran_result_t brake_port_attach(daran_drive_t *drive);
 
 #endif /* BRAKE_PORT_H */

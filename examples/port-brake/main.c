@@ -61,6 +61,12 @@ static daran_result_t chopper_set_frequency(void *ctx, float hz)
 
 static brake_chopper_t chopper = {chopper_set_frequency, NULL};
 
+brake_chopper_t *brake_chopper_of(void *ctx)
+{
+    (void)ctx; /* one drive, one chopper */
+    return &chopper;
+}
+
 /* ---- the HAL ----------------------------------------------------------- */
 
 static daran_result_t get(void *ctx, daran_prop_t p, daran_value_t *out)
@@ -170,7 +176,8 @@ static void reply(void *ctx, const char *line, size_t len)
 
 int main(int argc, char **argv)
 {
-    static const daran_hal_t hal = {get, set, move, action};
+    static const daran_hal_t hal = {.get = get, .set = set, .move = move, .action = action,
+                                    .write = reply};
     static daran_drive_t drive; /* the caller owns all memory */
     int echo = argc > 1 && strcmp(argv[1], "--echo") == 0;
     if (argc > 1 + echo) {
@@ -181,8 +188,7 @@ int main(int argc, char **argv)
     PROP(CURRENT_STATE).u32 = DARAN_STATE_CLOSED_LOOP;
     PROP(REQUESTED_STATE).u32 = DARAN_STATE_CLOSED_LOOP;
     PROP(VBUS_VOLTAGE).f32 = 24.0f;
-    if (daran_init(&drive, &hal, NULL, reply, NULL) != DARAN_OK ||
-        brake_port_attach(&drive, &chopper) != DARAN_OK) {
+    if (daran_init(&drive, &hal, NULL) != DARAN_OK || brake_port_attach(&drive) != DARAN_OK) {
         fprintf(stderr, "daran-port-brake: the drive refused its set-up\n");
         return 1;
     }

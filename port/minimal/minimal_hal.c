@@ -101,14 +101,14 @@ static void post_move(minimal_drive_t *drive, const daran_move_t *request)
     atomic_store_explicit(&drive->move_seq, seq + 2u, memory_order_release);
 }
 
-static daran_result_t get(void *ctx, daran_prop_t prop, daran_value_t *out)
+daran_result_t minimal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
 {
     minimal_drive_t *drive = ctx;
     *out = drive->props[prop];
     return DARAN_OK;
 }
 
-static daran_result_t set(void *ctx, daran_prop_t prop, daran_value_t value)
+daran_result_t minimal_set(void *ctx, daran_prop_t prop, daran_value_t value)
 {
     minimal_drive_t *drive = ctx;
     drive->props[prop] = value;
@@ -119,7 +119,7 @@ static daran_result_t set(void *ctx, daran_prop_t prop, daran_value_t value)
     return DARAN_OK;
 }
 
-static daran_result_t move(void *ctx, const daran_move_t *request)
+daran_result_t minimal_move(void *ctx, const daran_move_t *request)
 {
     minimal_drive_t *drive = ctx;
     daran_value_t *p = drive->props;
@@ -170,7 +170,7 @@ static daran_result_t move(void *ctx, const daran_move_t *request)
     return DARAN_OK;
 }
 
-static daran_result_t action(void *ctx, daran_action_t which)
+daran_result_t minimal_action(void *ctx, daran_action_t which)
 {
     minimal_drive_t *drive = ctx;
     daran_value_t *p = drive->props;
@@ -209,4 +209,4 @@ static daran_result_t action(void *ctx, daran_action_t which)
     }
 }
 
-const daran_hal_t minimal_hal = {get, set, move, action};
+const daran_hal_t minimal_hal = {MINIMAL_HAL_FUNCTIONS};

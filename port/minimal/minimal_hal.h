@@ -41,6 +41,18 @@ void minimal_drive_init(minimal_drive_t *drive);
  * taken and the main loop is not writing it just now (then: next tick). */
 bool minimal_drive_take_move(minimal_drive_t *drive, daran_move_t *move);
 
+/* The HAL's four functions; their context is a minimal_drive_t (or a struct
+ * that begins with one). A program's port description adds its reply
+ * writer: `static const daran_hal_t hal = {MINIMAL_HAL_FUNCTIONS, .write = uart_write};`. */
+daran_result_t minimal_get(void *ctx, daran_prop_t prop, daran_value_t *out);
+daran_result_t minimal_set(void *ctx, daran_prop_t prop, daran_value_t value);
+daran_result_t minimal_move(void *ctx, const daran_move_t *request);
+daran_result_t minimal_action(void *ctx, daran_action_t which);
+#define MINIMAL_HAL_FUNCTIONS \
+    .get = minimal_get, .set = minimal_set, .move = minimal_move, .action = minimal_action
+
+/* The four alone, for a HAL that wraps this one (the test kit's recorder,
+ * which writes the replies itself). */
 extern const daran_hal_t minimal_hal;
 
 #endif /* MINIMAL_HAL_H */

@@ -62,10 +62,12 @@ static void reply_to_uart(void *ctx, const char *line, size_t len)
     daran_board_uart0_write(line, len);
 }
 
+static const daran_hal_t reply_to_uart_port = {DARAN_SIM_HAL_FUNCTIONS, .write = reply_to_uart};
+
 void daran_fw_start_drive(daran_fw_t *d)
 {
     /* Fails only for a NULL pointer or HAL member: a build error, really. */
-    if (daran_init(&d->drive, &daran_sim_hal, &d->plant, reply_to_uart, NULL) != DARAN_OK) {
+    if (daran_init(&d->drive, &reply_to_uart_port, &d->plant) != DARAN_OK) {
         daran_board_fatal(5);
     }
 }

@@ -17,11 +17,10 @@
 static daran_result_t run_framed_line(daran_drive_t *drive);
 
 daran_result_t daran_init_checked(daran_drive_t *drive, uint32_t build_check,
-                                  const daran_hal_t *hal, void *hal_ctx, daran_write_fn write,
-                                  void *write_ctx)
+                                  const daran_hal_t *hal, void *ctx)
 {
-    if (drive == NULL || hal == NULL || write == NULL || hal->get == NULL || hal->set == NULL ||
-        hal->move == NULL || hal->action == NULL) {
+    if (drive == NULL || hal == NULL || hal->write == NULL || hal->get == NULL ||
+        hal->set == NULL || hal->move == NULL || hal->action == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
     if (build_check != DARAN_BUILD_CHECK(daran_drive_t)) {
@@ -32,18 +31,10 @@ daran_result_t daran_init_checked(daran_drive_t *drive, uint32_t build_check,
         raw[i] = 0;
     }
     drive->hal = hal;
-    drive->hal_ctx = hal_ctx;
-    drive->write = write;
-    drive->write_ctx = write_ctx;
+    drive->ctx = ctx;
     drive->telemetry_due = 1;
     daran_framer_reset(drive);
     return DARAN_OK;
-}
-
-void daran_set_forward(daran_drive_t *drive, daran_forward_fn forward, void *ctx)
-{
-    drive->forward = forward;
-    drive->forward_ctx = ctx;
 }
 
 daran_result_t daran_process_line(daran_drive_t *drive, const char *text, size_t len)
@@ -260,8 +251,8 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
         }
     } else
 #endif
-    if ((elsewhere || broadcast) && drive->forward != NULL) {
-        drive->forward(drive->forward_ctx, request.motor, line->text, line->len);
+    if (elsewhere || broadcast) {
+        (void)daran_forward_line(drive, request.motor, line->text, line->len);
     }
     if (elsewhere) {
         return DARAN_OK;
@@ -273,7 +264,7 @@ static daran_result_t dispatch(daran_drive_t *drive, const daran_line_t *line)
         return property;
     }
     if (found.port != NULL) {
-        return daran_from_hal(found.port->handler(drive, &request, drive->port_ctx));
+        return daran_from_hal(found.port->handler(drive, &request, drive->ctx));
     }
     return daran_run_command(drive, &request);
 }

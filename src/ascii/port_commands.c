@@ -63,7 +63,7 @@ static bool compiled_out_vendor_word(const daran_field_t *word)
 #endif
 
 daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_command_t *commands,
-                                       size_t count, void *ctx)
+                                       size_t count)
 {
     if (drive == NULL || (commands == NULL && count != 0u) || count > 255u) {
         return DARAN_ERR_BAD_ARGUMENT;
@@ -84,7 +84,6 @@ daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_co
     }
     drive->port_commands = count != 0u ? commands : NULL;
     drive->port_command_count = (uint8_t)count;
-    drive->port_ctx = ctx;
     return DARAN_OK;
 }
 
@@ -97,6 +96,12 @@ const daran_port_command_t *daran_find_port_command(const daran_drive_t *drive,
 size_t daran_args_count(const daran_args_t *args)
 {
     return (size_t)args->fields->count - 2u;
+}
+
+const char *daran_args_word(const daran_args_t *args, size_t *len)
+{
+    *len = args->fields->len[0];
+    return args->line + args->fields->start[0];
 }
 
 uint8_t daran_args_motor(const daran_args_t *args)
@@ -156,10 +161,9 @@ void daran_reply(daran_drive_t *drive, const char *payload, size_t len)
 #else /* !DARAN_ENABLE_PORT_COMMANDS */
 
 daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_command_t *commands,
-                                       size_t count, void *ctx)
+                                       size_t count)
 {
     (void)commands;
-    (void)ctx;
     /* no table to keep: an empty one is what the drive has already */
     return drive == NULL || count != 0u ? DARAN_ERR_BAD_ARGUMENT : DARAN_OK;
 }

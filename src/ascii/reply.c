@@ -1,6 +1,7 @@
 /* The reply writer: builds one line in the instance's reply buffer and hands
  * it whole to the port, with " *N" when the request carried a checksum. */
 #include "checksum.h"
+#include "hal.h"
 #include "number.h"
 #include "reply.h"
 #include "text.h"
@@ -75,7 +76,7 @@ void daran_reply_end(daran_drive_t *drive)
     for (size_t i = 0; i < sizeof LINE_END - 1u; i++) {
         out[len++] = LINE_END[i];
     }
-    drive->write(drive->write_ctx, out, len);
+    daran_write_line(drive, out, len);
     drive->reply_len = 0;
 }
 

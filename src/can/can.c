@@ -21,7 +21,7 @@
 /* The drive's own frames: one the port refuses is counted, not retried. */
 static void send(daran_can_t *can, uint32_t id, const uint8_t *data)
 {
-    if (!daran_can_send(can->port, can->port_ctx, id, data)) {
+    if (!daran_send_frame(can->drive, id, data)) {
         can->unsent++;
     }
 }
@@ -159,9 +159,9 @@ static void system_command(daran_can_t *can, const uint8_t *data, bool broadcast
         (void)daran_run_action(can->drive, action);
     } else if (subcode >= DARAN_CAN_SUB_START_TRACK && subcode <= DARAN_CAN_SUB_START_IMPEDANCE) {
         start(can, subcode, data, broadcast);
-    } else if ((subcode == DARAN_CAN_SUB_RESTORE || subcode == DARAN_CAN_SUB_FIRMWARE) &&
-               can->port->system_hook != NULL) {
-        can->port->system_hook(can->port_ctx, subcode, daran_can_get_u16(data + 4), daran_can_get_u16(data + 6));
+    } else if (subcode == DARAN_CAN_SUB_RESTORE || subcode == DARAN_CAN_SUB_FIRMWARE) {
+        daran_pass_system(can->drive, subcode, daran_can_get_u16(data + 4),
+                          daran_can_get_u16(data + 6));
     }
     /* 0x20 feeds the watchdogs, as every frame for the drive already has
      * (C18, C19); any other sub-code is ignored (C23). */
@@ -325,15 +325,17 @@ static void run_frame(daran_can_t *can, const daran_can_slot_t *frame, uint32_t 
 /* ---- the front end ---- */
 
 daran_result_t daran_can_init_checked(daran_can_t *can, daran_drive_t *drive,
-                                      const daran_can_port_t *port, void *port_ctx,
                                       uint32_t build_check)
 {
-    if (can == NULL || drive == NULL || port == NULL || port->send == NULL ||
-        port->now_ms == NULL) {
+    if (can == NULL || drive == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
+    /* first: a drive a mismatched build refused holds no port to look at */
     if (build_check != DARAN_BUILD_CHECK(daran_can_t)) {
         return DARAN_ERR_BUILD_MISMATCH;
+    }
+    if (drive->hal == NULL || drive->hal->can_send == NULL || drive->hal->now_ms == NULL) {
+        return DARAN_ERR_BAD_ARGUMENT;
     }
     /* every member but the slots, which the producer fills before use */
     unsigned char *raw = (unsigned char *)can;
@@ -341,14 +343,12 @@ daran_result_t daran_can_init_checked(daran_can_t *can, daran_drive_t *drive,
         raw[i] = 0;
     }
     can->drive = drive;
-    can->port = port;
-    can->port_ctx = port_ctx;
     daran_value_t protocol;
     /* read once, as a drive reads it at boot (C15); a port without the row
      * speaks the protocol */
     daran_result_t result = daran_get(drive, DARAN_PROP_CAN_PROTOCOL, &protocol);
     can->enabled = result != DARAN_OK || protocol.u32 == 1u;
-    can->heartbeat_ms = port->now_ms(port_ctx);
+    can->heartbeat_ms = daran_now_ms(drive);
     can->kept_ms = can->heartbeat_ms - 1u; /* the first poll looks */
     return DARAN_OK;
 }
@@ -376,7 +376,7 @@ static void keep_time(daran_can_t *can, uint32_t now)
 
 size_t daran_can_poll(daran_can_t *can)
 {
-    uint32_t now = can->port->now_ms(can->port_ctx);
+    uint32_t now = daran_now_ms(can->drive);
     size_t queued = daran_can_queued(can);
     for (size_t i = 0; i < queued; i++) {
         if (can->enabled) {

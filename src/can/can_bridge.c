@@ -76,7 +76,7 @@ static bool takes(const daran_line_sink_t *sink)
 static daran_result_t send_or_fail(daran_can_bridge_t *bridge, uint32_t node, uint32_t code,
                                    const uint8_t *data)
 {
-    return daran_can_send(bridge->can->port, bridge->can->port_ctx, DARAN_CAN_ID(node, code), data)
+    return daran_send_frame(bridge->can->drive, DARAN_CAN_ID(node, code), data)
                ? DARAN_OK
                : DARAN_ERR_BUS_ERROR;
 }
@@ -89,7 +89,7 @@ static daran_result_t ask_next(daran_can_bridge_t *bridge)
     /* the row's type (5.2) */
     daran_can_put_property(data, bridge->reads[bridge->next].address,
                            bridge->reads[bridge->next].type, 0);
-    bridge->asked_ms = bridge->can->port->now_ms(bridge->can->port_ctx);
+    bridge->asked_ms = daran_now_ms(bridge->can->drive);
     return send_or_fail(bridge, bridge->node, DARAN_CAN_READ, data);
 }
 
@@ -250,7 +250,7 @@ static bool pending(daran_can_bridge_t *bridge)
         return false;
     }
     daran_can_t *can = bridge->can;
-    if (can->port->now_ms(can->port_ctx) - bridge->asked_ms >= DARAN_CAN_BRIDGE_TIMEOUT_MS) {
+    if (daran_now_ms(can->drive) - bridge->asked_ms >= DARAN_CAN_BRIDGE_TIMEOUT_MS) {
         finish(bridge, DARAN_ERR_NO_REPLY); /* nothing of a partial answer (C32) */
         return false;
     }

@@ -98,15 +98,4 @@ int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
     return saturate || fits;
 }
 
-bool daran_can_send(const daran_can_port_t *port, void *port_ctx, uint32_t id,
-                    const uint8_t *data)
-{
-    daran_can_frame_t frame;
-    frame.id = id;
-    frame.dlc = 8;
-    frame.flags = 0;
-    memcpy(frame.data, data, sizeof frame.data);
-    return port->send(port_ctx, &frame);
-}
-
 #endif /* DARAN_ENABLE_CAN */

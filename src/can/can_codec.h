@@ -152,8 +152,4 @@ static inline void daran_can_put_property(uint8_t *data, uint32_t address, uint3
     daran_can_put_u32(data + 4, bits);
 }
 
-/* One 8-byte standard frame to the port: true when it took it. */
-bool daran_can_send(const daran_can_port_t *port, void *port_ctx, uint32_t id,
-                    const uint8_t *data);
-
 #endif /* DARAN_CAN_CODEC_H */

@@ -1,6 +1,6 @@
-/* The one door to the HAL (hal.c). Nothing else in the core calls
- * drive->hal; docs/design.md says which calls a line may make before it is
- * validated. */
+/* The one door to the port (hal.c and the inline calls below). Nothing else
+ * in the core calls drive->hal; docs/design.md says which calls a line may
+ * make before it is validated. */
 #ifndef DARAN_HAL_DOOR_H
 #define DARAN_HAL_DOOR_H
 
@@ -21,5 +21,35 @@ daran_result_t daran_act(daran_drive_t *drive, daran_action_t action);
 
 /* Hand a validated move to the HAL and feed the watchdog (D22). */
 daran_result_t daran_start_move(daran_drive_t *drive, const daran_move_t *move);
+
+/* Inline: the reply writer and the forward hook sit on every line's road. */
+static inline void daran_write_line(daran_drive_t *drive, const char *line, size_t len)
+{
+    drive->hal->write(drive->ctx, line, len);
+}
+
+/* False when the port has no forward hook. */
+static inline bool daran_forward_line(daran_drive_t *drive, uint8_t motor, const char *line,
+                                      size_t len)
+{
+    if (drive->hal->forward == NULL) {
+        return false;
+    }
+    drive->hal->forward(drive->ctx, motor, line, len);
+    return true;
+}
+
+#if DARAN_ENABLE_CAN
+static inline uint32_t daran_now_ms(const daran_drive_t *drive)
+{
+    return drive->hal->now_ms(drive->ctx);
+}
+
+/* One 8-byte standard frame to the port: true when it took it. */
+bool daran_send_frame(daran_drive_t *drive, uint32_t id, const uint8_t *data);
+
+/* The CAN system sub-codes the library leaves to the port (C19). */
+void daran_pass_system(daran_drive_t *drive, uint32_t subcode, uint16_t data1, uint16_t data2);
+#endif
 
 #endif /* DARAN_HAL_DOOR_H */

@@ -1,7 +1,7 @@
 /* The CAN requirements (CAN1-CAN7): what the port's CAN glue (its
  * transmit, clock and receive filter) and its HAL (the node guard's action,
  * the can.error write, the settings it must keep) owe the CAN front end
- * (docs/can.md). They run when the test port gives can_port and are
+ * (docs/can.md). They run when the test port's hal gives can_send and are
  * counted as skipped otherwise; the filter requirement needs can_deliver,
  * the guard and heartbeat advance(). */
 #include <math.h>
@@ -560,11 +560,11 @@ static void check_refused(void)
 
 void conf_check_can(void)
 {
-    if (conf_port()->can_port == NULL) {
+    if (conf_port()->hal->can_send == NULL) {
         for (int r = REQ_CAN_FIRST; r < REQ_COUNT; r++) {
-            conf_skip((conf_req_t)r, "every check", "the test port gives no can_port");
+            conf_skip((conf_req_t)r, "every check", "the test port's hal gives no can_send");
         }
-        conf_note("CAN: the test port gives no can_port, so CAN1-CAN7 were skipped "
+        conf_note("CAN: the test port's hal gives no can_send, so CAN1-CAN7 were skipped "
                   "(daran_test_port.h, docs/conformance.md)");
         return;
     }

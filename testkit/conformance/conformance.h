@@ -237,9 +237,14 @@ void conf_check_can(void);
 
 /* ---- can_harness.c: the CAN front end of a check (DARAN_ENABLE_CAN) ---- */
 
+/* Give the drive's port description @p hal the test port's clock, system
+ * hook and transmit, the transmit wrapped so every frame the drive sends is
+ * seen (nothing without CAN or without the port's can_send and now_ms). */
+void conf_can_watch(daran_hal_t *hal);
+
 #if DARAN_ENABLE_CAN
 /* Begin a CAN check: conf_begin(), then a fresh daran_can_t bound to the
- * drive and to the port's can_port (send wrapped). False when the check
+ * drive (its can_send wrapped by conf_can_watch()). False when the check
  * has failed already (reset, daran_can_init(), can.config.protocol 0). */
 bool conf_can_begin(conf_req_t req, const char *subject);
 /* Within a CAN check: reset and bind both front ends again. */

@@ -71,6 +71,7 @@ static struct harness {
     bool verbose;
     bool transcripts; /* every check's, not only the failures' */
     daran_drive_t drive;
+    daran_hal_t hal; /* the drive's: the recorder's, with this file's reply sink and the CAN watch */
     daran_recorder_t rec;
 
     /* the check in progress */
@@ -211,7 +212,10 @@ static void bind_drive(void)
 {
     daran_recorder_init(&h.rec, h.port->hal, h.port->ctx);
     h.rec.log_gets = true;
-    daran_result_t result = daran_init(&h.drive, &daran_recorder_hal, &h.rec, sink, &h.rec);
+    h.hal = daran_recorder_hal;
+    h.hal.write = sink;
+    conf_can_watch(&h.hal);
+    daran_result_t result = daran_init(&h.drive, &h.hal, &h.rec);
     if (result != DARAN_OK) {
         /* nothing can be checked: the program and its core disagree */
         printf("FATAL daran_init() refused the drive (%s): this program and its core were built "
@@ -220,8 +224,8 @@ static void bind_drive(void)
         exit(2);
     }
     if (h.port->commands != NULL && h.port->command_count > 0u &&
-        daran_set_port_commands(&h.drive, h.port->commands, h.port->command_count,
-                                h.port->commands_ctx) != DARAN_OK) {
+        daran_recorder_attach_commands(&h.rec, &h.drive, h.port->commands,
+                                       h.port->command_count) != DARAN_OK) {
         printf("FATAL daran_set_port_commands() refused the test port's command table\n"
                "0 passed, 1 failed\n");
         exit(2);

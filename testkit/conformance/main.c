@@ -36,11 +36,11 @@ static const char *port_problem(const daran_test_port_t *port)
     if (port->command_count > 0u && port->commands == NULL) {
         return "the test port gives a command count but no commands";
     }
-    if (port->can_port != NULL && (port->can_port->send == NULL || port->can_port->now_ms == NULL)) {
-        return "the test port's can_port has no send() or no now_ms()";
+    if ((port->hal->can_send == NULL) != (port->hal->now_ms == NULL)) {
+        return "the test port's hal gives one of can_send() and now_ms() without the other";
     }
-    if (port->can_port == NULL && port->can_deliver != NULL) {
-        return "the test port gives can_deliver but no can_port";
+    if (port->hal->can_send == NULL && port->can_deliver != NULL) {
+        return "the test port gives can_deliver but its hal no can_send()";
     }
     return NULL;
 }
@@ -74,7 +74,7 @@ int main(int argc, char **argv)
            DARAN_LINE_MAX, DARAN_REPLY_MAX, DARAN_MOTOR_ID_MAX, DARAN_ENABLE_HELP ? "on" : "off",
            DARAN_ENABLE_MULTI_MOTOR ? "on" : "off", (int)DARAN_PROP_COUNT,
            !DARAN_ENABLE_CAN ? "compiled out"
-           : port->can_port == NULL ? "not given by the test port"
+           : port->hal->can_send == NULL ? "not given by the test port"
            : port->can_deliver == NULL ? "on (no can_deliver: no filter)"
                                        : "on");
 

@@ -88,11 +88,13 @@ void daran_fuzz_set_input_name(const char *name);
  * to run it (its HAL's four functions, reset()): NULL when nothing. */
 const char *daran_fuzz_port_problem(const struct daran_test_port *port);
 
-/** The start of an input: the port's reset(), then @p drive bound to the
- * port's HAL wrapped in @p rec (getters logged too) with the reply sink
- * @p write. NULL when it went so, else what failed. */
+/** The start of an input: the port's reset(), then @p drive bound to
+ * @p shim (the recording HAL's functions with the harness's reply sink, and
+ * its CAN functions if it has them) with @p rec as context: the port's HAL
+ * wrapped in @p rec (getters logged too). NULL when it went so, else what
+ * failed. */
 const char *daran_fuzz_start_drive(const struct daran_test_port *port, struct daran_recorder *rec,
-                                   daran_drive_t *drive, daran_write_fn write, void *write_ctx);
+                                   daran_drive_t *drive, const daran_hal_t *shim);
 
 /** The first line of a violation's report on stderr: the banner, @p front_end
  * ("CAN, " or ""), the port's name and the input's, then @p fmt with @p ap. */

@@ -2,8 +2,8 @@
  * given through the port's own receive path (daran_test_port_t.can_deliver,
  * its acceptance filter; daran_can_receive() when it has none) into a CAN
  * front end bound to a drive whose HAL is the adopter's, wrapped in the
- * recording HAL, and whose transmit and clock are the port's (can_port:
- * send wrapped so every frame the drive sends is seen). Every input starts
+ * recording HAL, and whose transmit and clock are the port's (its
+ * can_send wrapped so every frame the drive sends is seen). Every input starts
  * from reset().
  *
  * Input: records of DARAN_FUZZ_CAN_RECORD (12) bytes, one frame each (a
@@ -73,7 +73,7 @@ typedef struct can_harness {
     daran_recorder_t rec;
     daran_drive_t drive;
     daran_can_t can;
-    daran_can_port_t wrap;
+    daran_hal_t shim; /* the drive's: the recorder's, no replies, the port's CAN functions wrapped */
     bool enabled;        /* can.config.protocol was 1 (or unreadable) at init */
     uint32_t now;        /* drive time since reset(), as this harness passed it */
     bool armed, tripped; /* the node guard, as docs/can.md says it goes */
@@ -133,27 +133,31 @@ static void violated(const char *fmt, ...)
 
 /* ---- the port's glue, wrapped ---- */
 
+/* The drive's context is the recorder; the harness is this file's one. */
 static bool wrapped_send(void *ctx, const daran_can_frame_t *frame)
 {
-    can_harness_t *h = ctx;
+    (void)ctx;
+    can_harness_t *h = &harness;
     if (h->n_sent == SENT_MAX) {
         violated("more than %u frames sent in one step", SENT_MAX);
     }
     h->sent[h->n_sent++] = *frame;
-    return h->port->can_port->send(h->port->can_ctx, frame);
+    return h->port->hal->can_send(h->port->ctx, frame);
 }
 
 static uint32_t wrapped_now(void *ctx)
 {
-    const can_harness_t *h = ctx;
-    return h->port->can_port->now_ms(h->port->can_ctx);
+    (void)ctx;
+    const can_harness_t *h = &harness;
+    return h->port->hal->now_ms(h->port->ctx);
 }
 
 static void wrapped_hook(void *ctx, uint32_t subcode, uint16_t data1, uint16_t data2)
 {
-    const can_harness_t *h = ctx;
-    if (h->port->can_port->system_hook != NULL) {
-        h->port->can_port->system_hook(h->port->can_ctx, subcode, data1, data2);
+    (void)ctx;
+    const can_harness_t *h = &harness;
+    if (h->port->hal->can_system != NULL) {
+        h->port->hal->can_system(h->port->ctx, subcode, data1, data2);
     }
 }
 
@@ -409,7 +413,7 @@ static void run_frame(can_harness_t *h, const daran_can_frame_t *frame)
     h->n_sent = 0;
     daran_recorder_clear(&h->rec);
     if (h->port->can_deliver != NULL) {
-        h->port->can_deliver(h->port->can_ctx, &h->can, frame);
+        h->port->can_deliver(h->port->ctx, &h->can, frame);
     } else {
         (void)daran_can_receive(&h->can, frame);
     }
@@ -523,12 +527,14 @@ static void bind_port(can_harness_t *h)
     if (problem != NULL) {
         violated("%s", problem);
     }
-    if (p->can_port == NULL || p->can_port->send == NULL || p->can_port->now_ms == NULL) {
-        violated("the test port gives no can_port with send() and now_ms(): nothing to fuzz");
+    if (p->hal->can_send == NULL || p->hal->now_ms == NULL) {
+        violated("the test port's hal gives no can_send() and now_ms(): nothing to fuzz");
     }
-    h->wrap.send = wrapped_send;
-    h->wrap.now_ms = wrapped_now;
-    h->wrap.system_hook = wrapped_hook;
+    h->shim = daran_recorder_hal;
+    h->shim.write = no_reply;
+    h->shim.can_send = wrapped_send;
+    h->shim.now_ms = wrapped_now;
+    h->shim.can_system = wrapped_hook;
 }
 
 static void start_input(can_harness_t *h)
@@ -536,13 +542,13 @@ static void start_input(can_harness_t *h)
     h->step = "reset and init";
     h->has_frame = false;
     h->n_sent = 0;
-    const char *problem = daran_fuzz_start_drive(h->port, &h->rec, &h->drive, no_reply, NULL);
+    const char *problem = daran_fuzz_start_drive(h->port, &h->rec, &h->drive, &h->shim);
     if (problem != NULL) {
         violated("%s", problem);
     }
-    daran_result_t result = daran_can_init(&h->can, &h->drive, &h->wrap, h);
+    daran_result_t result = daran_can_init(&h->can, &h->drive);
     if (result != DARAN_OK) {
-        violated("daran_can_init() refused the drive and the port's can_port (%s)",
+        violated("daran_can_init() refused the drive and the port's CAN functions (%s)",
                  daran_result_phrase(result));
     }
     daran_value_t protocol;

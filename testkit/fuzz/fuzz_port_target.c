@@ -110,7 +110,8 @@ static void violated(const char *fmt, ...)
 
 static void reply_sink(void *ctx, const char *line, size_t len)
 {
-    harness_t *h = ctx;
+    (void)ctx; /* the recorder */
+    harness_t *h = &harness;
     const char *problem = daran_fuzz_reply_problem(line, len);
     if (problem != NULL) {
         static char text[4 * DARAN_REPLY_MAX + 64];
@@ -166,12 +167,15 @@ static void start_input(harness_t *h)
 {
     const daran_test_port_t *p = h->port;
     h->line = NULL;
-    const char *problem = daran_fuzz_start_drive(p, &h->rec, &h->drive, reply_sink, h);
+    static daran_hal_t shim;
+    shim = daran_recorder_hal;
+    shim.write = reply_sink;
+    const char *problem = daran_fuzz_start_drive(p, &h->rec, &h->drive, &shim);
     if (problem != NULL) {
         violated("%s", problem);
     }
     if (p->command_count > 0u &&
-        daran_set_port_commands(&h->drive, p->commands, p->command_count, p->commands_ctx) !=
+        daran_recorder_attach_commands(&h->rec, &h->drive, p->commands, p->command_count) !=
             DARAN_OK) {
         violated("daran_set_port_commands() refused the test port's command table");
     }

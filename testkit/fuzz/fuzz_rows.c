@@ -147,14 +147,14 @@ const char *daran_fuzz_port_problem(const daran_test_port_t *port)
 }
 
 const char *daran_fuzz_start_drive(const daran_test_port_t *port, daran_recorder_t *rec,
-                                   daran_drive_t *drive, daran_write_fn write, void *write_ctx)
+                                   daran_drive_t *drive, const daran_hal_t *shim)
 {
     if (!port->reset(port->ctx)) {
         return "the test port's reset() failed";
     }
     daran_recorder_init(rec, port->hal, port->ctx);
     rec->log_gets = true;
-    if (daran_init(drive, &daran_recorder_hal, rec, write, write_ctx) != DARAN_OK) {
+    if (daran_init(drive, shim, rec) != DARAN_OK) {
         return "daran_init() refused the drive: is the harness built against the core's "
                "options header?";
     }

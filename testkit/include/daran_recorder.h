@@ -81,9 +81,17 @@ typedef struct daran_recorder {
      * of one's own that keeps its own log or checks each call as it comes. */
     void (*observer)(void *ctx, const daran_call_t *call);
     void *observer_ctx;
+
+    /** The inner port's own commands, as daran_recorder_attach_commands()
+     * gave them, and the relays the drive holds in their place. */
+    const daran_port_command_t *port_commands;
+    size_t port_command_count;
+    daran_port_command_t relays[255];
 } daran_recorder_t;
 
-/** The recording HAL; its context is a daran_recorder_t. */
+/** The recording HAL; its context is a daran_recorder_t. Replies go to
+ * daran_recorder_write(); the clock and the CAN functions pass to the inner
+ * HAL unrecorded; no forward hook. */
 extern const daran_hal_t daran_recorder_hal;
 
 /** Record calls to @p inner (with @p inner_ctx), or, with @p inner NULL,
@@ -105,8 +113,19 @@ void daran_recorder_init_store(daran_recorder_t *rec, uint32_t node_id);
 /** Forget the calls and replies (the store and the fault injection stay). */
 void daran_recorder_clear(daran_recorder_t *rec);
 
-/** A reply sink for daran_init(): its ctx is a daran_recorder_t. */
+/** The recording HAL's reply writer: its ctx is a daran_recorder_t. */
 void daran_recorder_write(void *ctx, const char *line, size_t len);
+
+/** Give @p drive (bound to daran_recorder_hal with @p rec) the inner port's
+ * own commands: the drive holds a relay for each, which hands the line to
+ * the port's handler with the inner context, as a drive bound to the port
+ * alone would. The table must outlive the drive. Returns what
+ * daran_set_port_commands() returns (DARAN_ERR_BAD_ARGUMENT for more than
+ * 255 commands). */
+DARAN_NODISCARD daran_result_t daran_recorder_attach_commands(daran_recorder_t *rec,
+                                                              daran_drive_t *drive,
+                                                              const daran_port_command_t *commands,
+                                                              size_t count);
 
 /** The @p nth (1-based) call among the kinds in @p mask returns @p result
  * without reaching the inner HAL or the store. @p prop >= 0 counts only

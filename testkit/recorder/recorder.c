@@ -265,8 +265,74 @@ static daran_result_t recorder_action(void *ctx, daran_action_t action)
     return record.result;
 }
 
-const daran_hal_t daran_recorder_hal = {recorder_get, recorder_set, recorder_move,
-                                        recorder_action};
+/* The clock and the CAN functions are not HAL calls a line's check is about:
+ * they pass to the inner port unrecorded (no inner one: a stopped clock and a
+ * controller that takes nothing). */
+static uint32_t recorder_now_ms(void *ctx)
+{
+    const daran_recorder_t *rec = ctx;
+    return rec->inner != NULL && rec->inner->now_ms != NULL ? rec->inner->now_ms(rec->inner_ctx)
+                                                            : 0u;
+}
+
+static bool recorder_can_send(void *ctx, const struct daran_can_frame *frame)
+{
+    const daran_recorder_t *rec = ctx;
+    return rec->inner != NULL && rec->inner->can_send != NULL &&
+           rec->inner->can_send(rec->inner_ctx, frame);
+}
+
+static void recorder_can_system(void *ctx, uint32_t subcode, uint16_t data1, uint16_t data2)
+{
+    const daran_recorder_t *rec = ctx;
+    if (rec->inner != NULL && rec->inner->can_system != NULL) {
+        rec->inner->can_system(rec->inner_ctx, subcode, data1, data2);
+    }
+}
+
+const daran_hal_t daran_recorder_hal = {recorder_get,      recorder_set,       recorder_move,
+                                        recorder_action,   daran_recorder_write, NULL,
+                                        recorder_now_ms,   recorder_can_send,  recorder_can_system};
+
+/* ---- the inner port's own commands ---- */
+
+/* A relay's handler: the drive's context is the recorder, the port's
+ * handler wants the port's own. */
+static daran_result_t relay_command(daran_drive_t *drive, const daran_args_t *args, void *ctx)
+{
+    const daran_recorder_t *rec = ctx;
+    size_t len = 0;
+    const char *word = daran_args_word(args, &len);
+    for (size_t i = 0; i < rec->port_command_count; i++) {
+        const daran_port_command_t *c = &rec->port_commands[i];
+        if (strlen(c->word) == len && memcmp(c->word, word, len) == 0) {
+            return c->handler(drive, args, rec->inner_ctx);
+        }
+    }
+    return DARAN_ERR_UNKNOWN_COMMAND; /* the drive found a relay: cannot happen */
+}
+
+daran_result_t daran_recorder_attach_commands(daran_recorder_t *rec, daran_drive_t *drive,
+                                              const daran_port_command_t *commands, size_t count)
+{
+    if (rec == NULL || count > sizeof rec->relays / sizeof rec->relays[0] ||
+        (commands == NULL && count != 0u)) {
+        return DARAN_ERR_BAD_ARGUMENT;
+    }
+    for (size_t i = 0; i < count; i++) {
+        rec->relays[i] = commands[i];
+        /* a NULL handler stays NULL, so the drive refuses the table as it would the port's */
+        if (commands[i].handler != NULL) {
+            rec->relays[i].handler = relay_command;
+        }
+    }
+    daran_result_t result = daran_set_port_commands(drive, rec->relays, count);
+    if (result == DARAN_OK) {
+        rec->port_commands = commands;
+        rec->port_command_count = count;
+    }
+    return result;
+}
 
 /* ---- setting up ---- */
 

@@ -45,7 +45,7 @@ static daran_result_t broken_action(void *ctx, daran_action_t action)
     return minimal_hal.action(ctx, action);
 }
 
-static const daran_hal_t broken_hal = {broken_get, broken_set, broken_move, broken_action};
+static const daran_hal_t broken_hal = {.get = broken_get, .set = broken_set, .move = broken_move, .action = broken_action};
 
 static daran_result_t brake_temperature(daran_drive_t *d, const daran_args_t *args, void *ctx)
 {

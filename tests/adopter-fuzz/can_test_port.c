@@ -27,6 +27,27 @@ static struct can_port_state {
     firmware_can_glue_t glue;
 } state = {.glue = {.node_id = node_id, .drive = &state.axis}};
 
+/* The firmware's CAN glue, found in the port's context. */
+static bool glue_send(void *ctx, const daran_can_frame_t *frame)
+{
+    return firmware_can_glue_send(&((struct can_port_state *)ctx)->glue, frame);
+}
+
+static uint32_t glue_now_ms(void *ctx)
+{
+    return firmware_can_glue_now_ms(&((struct can_port_state *)ctx)->glue);
+}
+
+static void glue_deliver(void *ctx, daran_can_t *can, const daran_can_frame_t *frame)
+{
+    firmware_can_glue_deliver(&((struct can_port_state *)ctx)->glue, can, frame);
+}
+
+/* The context is the state, whose first member is the drive minimal's
+ * functions take. */
+static const daran_hal_t can_port_hal = {MINIMAL_HAL_FUNCTIONS, .now_ms = glue_now_ms,
+                                         .can_send = glue_send};
+
 static bool factory_reset(void *ctx)
 {
     struct can_port_state *s = ctx;
@@ -56,13 +77,11 @@ const daran_test_port_t *daran_test_port(void)
 #endif
     static const daran_test_port_t port = {
         .name = "port/minimal with CAN glue",
-        .hal = &minimal_hal,
-        .ctx = &state, /* its first member is the drive minimal_hal takes */
+        .hal = &can_port_hal,
+        .ctx = &state,
         .reset = factory_reset,
         .advance = advance,
-        .can_port = &firmware_can_glue_port,
-        .can_ctx = &state.glue,
-        .can_deliver = firmware_can_glue_deliver,
+        .can_deliver = glue_deliver,
     };
     return &port;
 }

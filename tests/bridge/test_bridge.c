@@ -57,8 +57,6 @@ static bool bus_send(void *ctx, const daran_can_frame_t *frame)
     return true;
 }
 
-static const daran_can_port_t port = {bus_send, now_ms, NULL};
-
 static void gateway_write(void *ctx, const char *line, size_t len)
 {
     (void)ctx;
@@ -75,6 +73,13 @@ static void remote_write(void *ctx, const char *line, size_t len)
     (void)len;
     TEST_FAIL_MESSAGE("a remote drive answered on its ASCII link");
 }
+
+/* A node is its ports' context: its first member is the drive minimal's
+ * functions take. */
+static const daran_hal_t gateway_port = {MINIMAL_HAL_FUNCTIONS, .write = gateway_write,
+                                         .now_ms = now_ms, .can_send = bus_send};
+static const daran_hal_t remote_port = {MINIMAL_HAL_FUNCTIONS, .write = remote_write,
+                                        .now_ms = now_ms, .can_send = bus_send};
 
 /* Forget what drive 1 answered so far. */
 static void clear_out(void)
@@ -95,9 +100,9 @@ void setUp(void)
         node_t *n = &nodes[i];
         minimal_drive_init(&n->hal);
         n->hal.props[DARAN_PROP_CAN_NODE_ID].u32 = (uint32_t)(i + 1u);
-        TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&n->drive, &minimal_hal, &n->hal,
-                                                   i == 0 ? gateway_write : remote_write, NULL));
-        TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&n->can, &n->drive, &port, n));
+        TEST_ASSERT_EQUAL_INT(DARAN_OK,
+                              daran_init(&n->drive, i == 0 ? &gateway_port : &remote_port, n));
+        TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&n->can, &n->drive));
     }
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_bridge_init(&bridge, &nodes[0].can));
 }
@@ -522,7 +527,7 @@ static void test_h_for_another_id_is_the_gateways_without_traffic(void)
 static void test_without_can_protocol_lines_for_others_stay_silent(void)
 {
     nodes[0].hal.props[DARAN_PROP_CAN_PROTOCOL].u32 = 0;
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&nodes[0].can, &nodes[0].drive, &port, &nodes[0]));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&nodes[0].can, &nodes[0].drive));
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_bridge_init(&bridge, &nodes[0].can));
     line("t 2 10");
     line("f 2");

@@ -59,8 +59,6 @@ static bool bus_send(void *ctx, const daran_can_frame_t *frame)
     return true;
 }
 
-static const daran_can_port_t port = {bus_send, now_ms, NULL};
-
 static void gateway_write(void *ctx, const char *line, size_t len)
 {
     (void)ctx;
@@ -78,6 +76,13 @@ static void remote_write(void *ctx, const char *line, size_t len)
     TEST_FAIL_MESSAGE("the remote drive answered on its ASCII link");
 }
 
+/* A node is its ports' context: its first member is the drive minimal's
+ * functions take. */
+static const daran_hal_t gateway_port = {MINIMAL_HAL_FUNCTIONS, .write = gateway_write,
+                                         .now_ms = now_ms, .can_send = bus_send};
+static const daran_hal_t remote_port = {MINIMAL_HAL_FUNCTIONS, .write = remote_write,
+                                        .now_ms = now_ms, .can_send = bus_send};
+
 /* A port command: `zz id`, counted when it runs. */
 static daran_result_t run_zz(daran_drive_t *drive, const daran_args_t *args, void *ctx)
 {
@@ -89,13 +94,13 @@ static daran_result_t run_zz(daran_drive_t *drive, const daran_args_t *args, voi
 }
 static const daran_port_command_t port_commands[] = {{"zz", 0, 0, 0, run_zz, ""}};
 
-static void start(node_t *node, uint32_t id, daran_write_fn write)
+static void start(node_t *node, uint32_t id, const daran_hal_t *port)
 {
     memset(node, 0, sizeof *node);
     minimal_drive_init(&node->hal);
     node->hal.props[DARAN_PROP_CAN_NODE_ID].u32 = id;
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&node->drive, &minimal_hal, &node->hal, write, NULL));
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&node->can, &node->drive, &port, node));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&node->drive, port, node));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&node->can, &node->drive));
 }
 
 void setUp(void)
@@ -104,9 +109,9 @@ void setUp(void)
     out_len = 0;
     out[0] = '\0';
     port_command_runs = 0;
-    start(&gateway, 1, gateway_write);
-    start(&remote, 2, remote_write);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&gateway.drive, port_commands, 1, NULL));
+    start(&gateway, 1, &gateway_port);
+    start(&remote, 2, &remote_port);
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&gateway.drive, port_commands, 1));
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_bridge_init(&bridge, &gateway.can));
 }
 

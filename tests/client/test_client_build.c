@@ -290,12 +290,14 @@ static void collect(void *ctx, const char *text, size_t len)
     answered_len += len;
 }
 
+static const daran_hal_t collect_port = {MINIMAL_HAL_FUNCTIONS, .write = collect};
+
 static void test_every_built_request_is_accepted_by_a_real_core(void)
 {
     static minimal_drive_t hal;
     static daran_drive_t drive;
     minimal_drive_init(&hal);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &minimal_hal, &hal, collect, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &collect_port, &hal));
     daran_client_request_t requests[] = {
         motion(DARAN_CLIENT_CMD_T, 1, 3, 10, 0, 25, 0, 0),
         motion(DARAN_CLIENT_CMD_Q, 1, 3, 160, 30, 10, 0, 0),

@@ -52,6 +52,8 @@ static void drive_write(void *ctx, const char *text, size_t len)
     wire_len += len;
 }
 
+static const daran_hal_t drive_write_port = {MINIMAL_HAL_FUNCTIONS, .write = drive_write};
+
 static bool port_write(void *ctx, const char *bytes, size_t len)
 {
     (void)ctx;
@@ -132,7 +134,7 @@ static void open_link(bool checksum, uint8_t retries)
 void setUp(void)
 {
     minimal_drive_init(&hal);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &minimal_hal, &hal, drive_write, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &drive_write_port, &hal));
     clock_ms = 0xFFFFFF00u; /* the clock wraps during the tests */
     tick = 0;
     wire_len = 0;

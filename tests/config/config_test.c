@@ -36,6 +36,8 @@ static void on_reply(void *ctx, const char *line, size_t len)
     reply_count++;
 }
 
+static const daran_hal_t on_reply_port = {DARAN_STUB_HAL_FUNCTIONS, .write = on_reply};
+
 static daran_drive_t drive;
 static unsigned passed;
 static unsigned failed;
@@ -53,7 +55,7 @@ static void check(int ok, const char *test, const char *detail)
 static void reset(void)
 {
     daran_stub_init(&stub, OWN_ID);
-    if (daran_init(&drive, &daran_stub_hal, &stub, on_reply, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &on_reply_port, &stub) != DARAN_OK) {
         printf("daran_init failed\n");
         exit(1);
     }

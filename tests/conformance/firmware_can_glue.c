@@ -13,28 +13,24 @@ void firmware_can_glue_advance(firmware_can_glue_t *glue, uint32_t ms)
     glue->now_ms += ms;
 }
 
-static bool glue_send(void *ctx, const daran_can_frame_t *frame)
+bool firmware_can_glue_send(firmware_can_glue_t *glue, const daran_can_frame_t *frame)
 {
-    const firmware_can_glue_t *glue = ctx;
     if (glue->mistake == FIRMWARE_CAN_HEARS_ITS_OWN_FRAMES && glue->heard != NULL) {
         (void)daran_can_receive(glue->heard, frame);
     }
     return true;
 }
 
-static uint32_t glue_now_ms(void *ctx)
+uint32_t firmware_can_glue_now_ms(const firmware_can_glue_t *glue)
 {
-    const firmware_can_glue_t *glue = ctx;
     return glue->mistake == FIRMWARE_CAN_CLOCK_IN_TENTHS ? glue->now_ms * 10u : glue->now_ms;
 }
 
-const daran_can_port_t firmware_can_glue_port = {glue_send, glue_now_ms, NULL};
-
 /* Status frames at the own id pass too (the duplicate check needs them);
  * other shapes pass to the front end, which drops them itself (C21). */
-void firmware_can_glue_deliver(void *ctx, daran_can_t *can, const daran_can_frame_t *frame)
+void firmware_can_glue_deliver(firmware_can_glue_t *glue, daran_can_t *can,
+                               const daran_can_frame_t *frame)
 {
-    firmware_can_glue_t *glue = ctx;
     daran_can_frame_t taken = *frame;
     if (glue->mistake == FIRMWARE_CAN_EXTENDED_ID_TAKEN_AS_STANDARD) {
         taken.flags &= (uint8_t)~DARAN_CAN_FRAME_EXTENDED;

@@ -5,9 +5,11 @@
  * acceptance filter passes standard ids at the drive's current id and at
  * node 0. One of its mistakes can be chosen, for the kit to catch.
  *
- * A test port gives firmware_can_glue_port and firmware_can_glue_deliver
- * with the glue as can_ctx, and calls firmware_can_glue_reset() and
- * firmware_can_glue_advance() from its reset() and advance(). */
+ * A test port's hal gives the glue's transmit and clock (can_send and
+ * now_ms) and its can_deliver the glue's receive path, each through a
+ * wrapper that finds the glue in the port's context, and calls
+ * firmware_can_glue_reset() and firmware_can_glue_advance() from its
+ * reset() and advance(). */
 #ifndef FIRMWARE_CAN_GLUE_H
 #define FIRMWARE_CAN_GLUE_H
 
@@ -32,12 +34,14 @@ typedef struct firmware_can_glue {
     daran_can_t *heard;   /* the front end the last frame was delivered to */
 } firmware_can_glue_t;
 
-/** The transmit and the clock, with the glue as context. */
-extern const daran_can_port_t firmware_can_glue_port;
+/** The transmit and the clock. */
+bool firmware_can_glue_send(firmware_can_glue_t *glue, const daran_can_frame_t *frame);
+uint32_t firmware_can_glue_now_ms(const firmware_can_glue_t *glue);
 
-/** The receive path (daran_test_port_t.can_deliver, @p ctx the glue):
- * @p frame into daran_can_receive(@p can) when the filter passes it. */
-void firmware_can_glue_deliver(void *ctx, daran_can_t *can, const daran_can_frame_t *frame);
+/** The receive path (for daran_test_port_t.can_deliver): @p frame into
+ * daran_can_receive(@p can) when the filter passes it. */
+void firmware_can_glue_deliver(firmware_can_glue_t *glue, daran_can_t *can,
+                               const daran_can_frame_t *frame);
 
 /** The port's reset: the clock at 0, the filter set for the drive's id. The
  * chosen mistake stays. */

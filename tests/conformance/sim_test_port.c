@@ -82,7 +82,30 @@ static daran_result_t sim_move(void *ctx, const daran_move_t *move)
     return daran_sim_hal.move(ctx, move);
 }
 
-static const daran_hal_t sim_hal = {sim_get, sim_set, sim_move, sim_action};
+/* The firmware's CAN glue, found in the port's context. */
+static bool glue_send(void *ctx, const daran_can_frame_t *frame)
+{
+    return firmware_can_glue_send(&((struct sim_port *)ctx)->glue, frame);
+}
+
+static uint32_t glue_now_ms(void *ctx)
+{
+    return firmware_can_glue_now_ms(&((struct sim_port *)ctx)->glue);
+}
+
+static void glue_deliver(void *ctx, daran_can_t *can, const daran_can_frame_t *frame)
+{
+    firmware_can_glue_deliver(&((struct sim_port *)ctx)->glue, can, frame);
+}
+
+/* The context is the port's state, whose first member is the drive the
+ * simulator's functions take. */
+static const daran_hal_t sim_hal = {.get = sim_get,
+                                    .set = sim_set,
+                                    .move = sim_move,
+                                    .action = sim_action,
+                                    .now_ms = glue_now_ms,
+                                    .can_send = glue_send};
 
 static bool factory_reset(void *ctx)
 {
@@ -115,9 +138,7 @@ const daran_test_port_t *daran_test_port(void)
         .ctx = &port_state,
         .reset = factory_reset,
         .advance = advance,
-        .can_port = &firmware_can_glue_port,
-        .can_ctx = &port_state.glue,
-        .can_deliver = firmware_can_glue_deliver,
+        .can_deliver = glue_deliver,
     };
     return &port;
 }

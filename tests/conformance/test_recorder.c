@@ -21,7 +21,7 @@ static daran_drive_t drive;
 void setUp(void)
 {
     daran_recorder_init_store(&rec, 1);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &daran_recorder_hal, &rec, daran_recorder_write, &rec));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &daran_recorder_hal, &rec));
 }
 
 void tearDown(void)

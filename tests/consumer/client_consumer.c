@@ -52,6 +52,8 @@ static void keep_reply(void *ctx, const char *line, size_t len)
     reply_len = len;
 }
 
+static const daran_hal_t keep_reply_port = {DARAN_STUB_HAL_FUNCTIONS, .write = keep_reply};
+
 int main(void)
 {
     daran_client_request_t move;
@@ -104,7 +106,7 @@ int main(void)
     stub.values[DARAN_PROP_VBUS_VOLTAGE].f32 = 24.5f;
     char request_line[DARAN_CLIENT_LINE_MAX];
     size_t request_len = 0;
-    int ok = daran_init(&drive, &daran_stub_hal, &stub, keep_reply, NULL) == DARAN_OK &&
+    int ok = daran_init(&drive, &keep_reply_port, &stub) == DARAN_OK &&
              daran_client_build(&read, true, request_line, sizeof request_line, &request_len) ==
                  DARAN_OK;
     reply_len = 0;

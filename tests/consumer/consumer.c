@@ -29,6 +29,8 @@ static void write_reply(void *ctx, const char *line, size_t len)
     reply[len] = '\0';
 }
 
+static const daran_hal_t write_reply_port = {DARAN_STUB_HAL_FUNCTIONS, .write = write_reply};
+
 
 static int failed;
 
@@ -62,7 +64,7 @@ int main(void)
      * library's: built with other size options, it must refuse. */
     daran_stub_init(&stub, 1);
     stub.values[DARAN_PROP_VBUS_VOLTAGE].f32 = 24.5f;
-    daran_result_t init = daran_init(&drive, &daran_stub_hal, &stub, write_reply, NULL);
+    daran_result_t init = daran_init(&drive, &write_reply_port, &stub);
     if (init != DARAN_OK) {
         printf("daran_init refused the instance: %s (sizeof(daran_drive_t) %u here)\n",
                daran_result_phrase(init), (unsigned)sizeof drive);

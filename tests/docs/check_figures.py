@@ -124,8 +124,8 @@ def probe_sizes(root, cc, nm, flags):
 
 def flash_figures(lib, size, python):
     figures = {}
-    for key, members in (("core_flash", ["--except", "^can"]),
-                         ("can_flash", ["--only", r"^can(|_address|_codec|_ring)\.c"]),
+    for key, members in (("core_flash", ["--except", "^(can|hal_can)"]),
+                         ("can_flash", ["--only", r"^(can(|_address|_codec|_ring)|hal_can)\.c"]),
                          ("bridge_flash", ["--only", r"^can_(bridge|encode)\.c"])):
         out = run([python, BUDGETS, "flash", lib, size, str(1 << 30)] + members)
         m = re.search(r"flash \(text \+ data\)[^:]*: (\d+) bytes", out)

@@ -41,9 +41,9 @@
 #define DRIVES 3u
 
 typedef struct node {
+    fuzz_hal_t hal; /* first: the node is the context of fuzz_hal's functions */
     daran_drive_t drive;
     daran_can_t can;
-    fuzz_hal_t hal;
     bool unplugged;
 } node_t;
 
@@ -102,8 +102,6 @@ static bool bus_send(void *ctx, const daran_can_frame_t *frame)
     return true;
 }
 
-static const daran_can_port_t port = {bus_send, clock_ms, NULL};
-
 static void remote_write(void *ctx, const char *line, size_t len)
 {
     (void)ctx;
@@ -121,10 +119,23 @@ static daran_result_t bridge_set(void *ctx, daran_prop_t prop, daran_value_t val
         h->props[DARAN_PROP_CAN_ERROR] = value;
         return DARAN_OK;
     }
-    return fuzz_hal_fns.set(ctx, prop, value);
+    return fuzz_hal_set(ctx, prop, value);
 }
 
-static daran_hal_t bridge_hal;
+static const daran_hal_t gateway_hal = {.get = fuzz_hal_get,
+                                        .set = bridge_set,
+                                        .move = fuzz_hal_move,
+                                        .action = fuzz_hal_action,
+                                        .write = fuzz_write,
+                                        .now_ms = clock_ms,
+                                        .can_send = bus_send};
+static const daran_hal_t remote_hal = {.get = fuzz_hal_get,
+                                       .set = bridge_set,
+                                       .move = fuzz_hal_move,
+                                       .action = fuzz_hal_action,
+                                       .write = remote_write,
+                                       .now_ms = clock_ms,
+                                       .can_send = bus_send};
 
 static void poll_all(void)
 {
@@ -142,24 +153,19 @@ static void setup(uint8_t flags)
     sends = 0;
     gateway_bus_off = (flags & 4u) != 0u;
     refuse_every_third = (flags & 8u) != 0u;
-    bridge_hal = fuzz_hal_fns;
-    bridge_hal.set = bridge_set;
     for (size_t i = 0; i < DRIVES; i++) {
         node_t *n = &nodes[i];
         fuzz_hal_init(&n->hal, (uint32_t)(i + 1u));
         n->hal.props[DARAN_PROP_CAN_PROTOCOL].u32 = 1;
-        fuzz_bind(&n->drive, &n->hal, false);
-        n->drive.hal = &bridge_hal;
-        if (i != 0u) {
-            n->drive.write = remote_write;
-        }
+        FUZZ_CHECK(daran_init(&n->drive, i == 0u ? &gateway_hal : &remote_hal, n) == DARAN_OK,
+                   "daran_init refused a complete HAL");
     }
     nodes[0].hal.props[DARAN_PROP_CAN_PROTOCOL].u32 = (flags & 16u) != 0u ? 0u : 1u;
     nodes[1].hal.props[DARAN_PROP_ENABLE_REPLY_STATE].u32 = (flags & 32u) != 0u ? 1u : 0u;
     nodes[1].unplugged = (flags & 1u) != 0u;
     nodes[2].unplugged = (flags & 2u) != 0u;
     for (size_t i = 0; i < DRIVES; i++) {
-        FUZZ_CHECK(daran_can_init(&nodes[i].can, &nodes[i].drive, &port, &nodes[i]) == DARAN_OK,
+        FUZZ_CHECK(daran_can_init(&nodes[i].can, &nodes[i].drive) == DARAN_OK,
                    "daran_can_init refused");
     }
     FUZZ_CHECK(daran_can_bridge_init(&bridge, &nodes[0].can) == DARAN_OK,

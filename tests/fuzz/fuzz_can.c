@@ -111,7 +111,7 @@ static void note_call(char kind)
 
 static daran_result_t can_get(void *ctx, daran_prop_t prop, daran_value_t *out)
 {
-    return fuzz_hal_fns.get(ctx, prop, out);
+    return fuzz_hal_get(ctx, prop, out);
 }
 
 static daran_result_t can_set(void *ctx, daran_prop_t prop, daran_value_t value)
@@ -119,7 +119,7 @@ static daran_result_t can_set(void *ctx, daran_prop_t prop, daran_value_t value)
     fuzz_hal_t *h = ctx;
     if (prop != DARAN_PROP_CAN_ERROR) {
         note_call('s');
-        return fuzz_hal_fns.set(ctx, prop, value);
+        return fuzz_hal_set(ctx, prop, value);
     }
     /* an error register takes 0; can.error also bit 0 on a duplicate id (C22) */
     uint32_t old = h->props[DARAN_PROP_CAN_ERROR].u32;
@@ -138,7 +138,7 @@ static daran_result_t can_set(void *ctx, daran_prop_t prop, daran_value_t value)
 static daran_result_t can_move(void *ctx, const daran_move_t *move)
 {
     note_call('m');
-    return fuzz_hal_fns.move(ctx, move);
+    return fuzz_hal_move(ctx, move);
 }
 
 static daran_result_t can_action(void *ctx, daran_action_t action)
@@ -154,7 +154,7 @@ static daran_result_t can_action(void *ctx, daran_action_t action)
     }
     if (action != DARAN_ACTION_NODE_GUARD) {
         note_call(action == DARAN_ACTION_FEED_WATCHDOG ? 'f' : 'a');
-        return fuzz_hal_fns.action(ctx, action);
+        return fuzz_hal_action(ctx, action);
     }
     uint32_t limit = h->props[DARAN_PROP_CAN_TIMEOUT_MS].u32;
     FUZZ_CHECK(st.armed && !st.tripped && limit != 0u && st.now - st.last_for_drive >= limit,
@@ -168,7 +168,6 @@ static daran_result_t can_action(void *ctx, daran_action_t action)
     return DARAN_OK;
 }
 
-static const daran_hal_t can_hal = {can_get, can_set, can_move, can_action};
 
 /* ---- the port ---- */
 
@@ -249,8 +248,21 @@ static void port_hook(void *ctx, uint32_t subcode, uint16_t data1, uint16_t data
     FUZZ_CHECK(subcode == 0x00u || subcode == 0x07u, "system hook called with sub-code 0x%x", (unsigned)subcode);
 }
 
-static const daran_can_port_t port_with_hook = {port_send, port_now, port_hook};
-static const daran_can_port_t port_without_hook = {port_send, port_now, NULL};
+static const daran_hal_t port_with_hook = {.get = can_get,
+                                           .set = can_set,
+                                           .move = can_move,
+                                           .action = can_action,
+                                           .write = fuzz_write,
+                                           .now_ms = port_now,
+                                           .can_send = port_send,
+                                           .can_system = port_hook};
+static const daran_hal_t port_without_hook = {.get = can_get,
+                                              .set = can_set,
+                                              .move = can_move,
+                                              .action = can_action,
+                                              .write = fuzz_write,
+                                              .now_ms = port_now,
+                                              .can_send = port_send};
 
 /* ---- the harness's own reading of a frame ---- */
 
@@ -429,11 +441,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     st.enabled = h->props[DARAN_PROP_CAN_PROTOCOL].u32 == 1u;
     st.refuse_every_3 = (data[1] & 0x20u) != 0u;
     st.now = 1000u * data[0];
-    if (daran_init(&st.drive, &can_hal, h, fuzz_write, h) != DARAN_OK) {
+    const daran_hal_t *port = (data[1] & 0x10u) != 0u ? &port_without_hook : &port_with_hook;
+    if (daran_init(&st.drive, port, h) != DARAN_OK) {
         fuzz_fail("daran_init refused a complete HAL");
     }
-    const daran_can_port_t *port = (data[1] & 0x10u) != 0u ? &port_without_hook : &port_with_hook;
-    if (daran_can_init(&st.can, &st.drive, port, h) != DARAN_OK) {
+    if (daran_can_init(&st.can, &st.drive) != DARAN_OK) {
         fuzz_fail("daran_can_init refused a complete port");
     }
 

@@ -185,7 +185,7 @@ static void interrupt(fuzz_hal_t *h)
     }
 }
 
-static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+daran_result_t fuzz_hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
 {
     fuzz_hal_t *h = ctx;
     interrupt(h);
@@ -306,7 +306,7 @@ static bool blocking_flags(const fuzz_hal_t *h)
     return h->props[DARAN_PROP_AXIS_ERROR].u32 != 0u;
 }
 
-static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
+daran_result_t fuzz_hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
 {
     fuzz_hal_t *h = ctx;
     interrupt(h);
@@ -344,7 +344,7 @@ static bool finite_move(const daran_move_t *m)
            isfinite(m->rate) && isfinite(m->kp) && isfinite(m->kd);
 }
 
-static daran_result_t hal_move(void *ctx, const daran_move_t *move)
+daran_result_t fuzz_hal_move(void *ctx, const daran_move_t *move)
 {
     fuzz_hal_t *h = ctx;
     interrupt(h);
@@ -397,7 +397,7 @@ static daran_result_t hal_move(void *ctx, const daran_move_t *move)
     return outcome(h, DARAN_OK);
 }
 
-static daran_result_t hal_action(void *ctx, daran_action_t action)
+daran_result_t fuzz_hal_action(void *ctx, daran_action_t action)
 {
     fuzz_hal_t *h = ctx;
     interrupt(h);
@@ -451,7 +451,6 @@ daran_result_t fuzz_hal_port_call(fuzz_hal_t *h, uint32_t tag, const void *data,
     return outcome(h, DARAN_OK);
 }
 
-const daran_hal_t fuzz_hal_fns = {hal_get, hal_set, hal_move, hal_action};
 
 void fuzz_check_reply_line(const char *line, size_t len)
 {
@@ -570,12 +569,13 @@ void fuzz_forward(void *ctx, uint8_t id, const char *line, size_t len)
     h->hash = fuzz_hash(h->hash, line, len);
 }
 
+const daran_hal_t fuzz_hal_fns = {FUZZ_HAL_FUNCTIONS, .write = fuzz_write};
+const daran_hal_t fuzz_hal_forwarding = {FUZZ_HAL_FUNCTIONS, .write = fuzz_write,
+                                         .forward = fuzz_forward};
+
 void fuzz_bind(daran_drive_t *drive, fuzz_hal_t *h, bool forward)
 {
-    if (daran_init(drive, &fuzz_hal_fns, h, fuzz_write, h) != DARAN_OK) {
+    if (daran_init(drive, forward ? &fuzz_hal_forwarding : &fuzz_hal_fns, h) != DARAN_OK) {
         fuzz_fail("daran_init refused a complete HAL");
-    }
-    if (forward) {
-        daran_set_forward(drive, fuzz_forward, h);
     }
 }

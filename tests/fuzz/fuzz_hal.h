@@ -75,7 +75,16 @@ typedef struct fuzz_hal {
     char forward_line[DARAN_LINE_MAX + 8];
 } fuzz_hal_t;
 
+/* The HAL's four functions, their context a fuzz_hal_t. */
+daran_result_t fuzz_hal_get(void *ctx, daran_prop_t prop, daran_value_t *out);
+daran_result_t fuzz_hal_set(void *ctx, daran_prop_t prop, daran_value_t value);
+daran_result_t fuzz_hal_move(void *ctx, const daran_move_t *move);
+daran_result_t fuzz_hal_action(void *ctx, daran_action_t action);
+#define FUZZ_HAL_FUNCTIONS \
+    .get = fuzz_hal_get, .set = fuzz_hal_set, .move = fuzz_hal_move, .action = fuzz_hal_action
+/* The four with fuzz_write, and with fuzz_forward too. */
 extern const daran_hal_t fuzz_hal_fns;
+extern const daran_hal_t fuzz_hal_forwarding;
 
 /* Defaults like a fresh drive: id @p id, closed loop, no flags. */
 void fuzz_hal_init(fuzz_hal_t *h, uint32_t id);

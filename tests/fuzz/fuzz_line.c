@@ -235,7 +235,7 @@ static void check_line(const char *line, size_t len)
                    motor, own, h->n_replies, fuzz_hal_mutations(h), h->n_get_other,
                    fuzz_escape(line, len));
     }
-    if (other && st.drive.forward != NULL) {
+    if (other && st.drive.hal->forward != NULL) {
         FUZZ_CHECK(h->n_forward == 1u && h->forward_id == (uint8_t)motor &&
                        h->forward_len == len && memcmp(h->forward_line, line, len) == 0,
                    "line for id %d not forwarded once, unchanged: \"%s\"", motor,

@@ -66,6 +66,12 @@ static daran_result_t chopper_set(void *ctx, float hz)
 
 static brake_chopper_t chopper = {chopper_set, NULL};
 
+brake_chopper_t *brake_chopper_of(void *ctx)
+{
+    (void)ctx;
+    return &chopper;
+}
+
 /* The protocol's number grammar (spec 5): [+-]?(d+(.d*)?|.d+)([eE][+-]?d+)?,
  * written out here rather than taken from the core. */
 static bool number_grammar(const char *p, size_t n)
@@ -157,13 +163,13 @@ static void port_write(void *ctx, const char *line, size_t len)
 static void port_setup(daran_drive_t *drive, fuzz_hal_t *hal, const uint8_t *data)
 {
     /* bound again with the checking reply sink, then the port's table */
-    if (daran_init(drive, &fuzz_hal_fns, hal, port_write, hal) != DARAN_OK) {
+    static const daran_hal_t checked = {FUZZ_HAL_FUNCTIONS, .write = port_write};
+    static const daran_hal_t checked_forwarding = {FUZZ_HAL_FUNCTIONS, .write = port_write,
+                                                   .forward = fuzz_forward};
+    if (daran_init(drive, (data[1] & 4u) != 0u ? &checked_forwarding : &checked, hal) != DARAN_OK) {
         fuzz_fail("daran_init refused a complete HAL");
     }
-    if ((data[1] & 4u) != 0u) {
-        daran_set_forward(drive, fuzz_forward, hal);
-    }
-    if (brake_port_attach(drive, &chopper) != DARAN_OK) {
+    if (brake_port_attach(drive) != DARAN_OK) {
         fuzz_fail("the example's command table was refused");
     }
     hal->props[DARAN_PROP_BRAKE_TEMPERATURE].f32 = 41.5f;

@@ -321,13 +321,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             h->props[DARAN_PROP_AXIS_ERROR].u32 = 0xffffffffu;
         }
     }
-    if (daran_init(&st.drive, &fuzz_hal_fns, &st.hal, write_line, &st.hal) != DARAN_OK) {
+    static const daran_hal_t reporting = {FUZZ_HAL_FUNCTIONS, .write = write_line};
+    static const daran_hal_t reporting_forwarding = {FUZZ_HAL_FUNCTIONS, .write = write_line,
+                                                     .forward = fuzz_forward};
+    if (daran_init(&st.drive, (flags & 0x40u) != 0u ? &reporting_forwarding : &reporting,
+                   &st.hal) != DARAN_OK) {
         fuzz_fail("daran_init refused a complete HAL");
     }
     fuzz_bind(&st.ref, &st.ref_hal, (flags & 0x40u) != 0u);
-    if ((flags & 0x40u) != 0u) {
-        daran_set_forward(&st.drive, fuzz_forward, &st.hal);
-    }
     st.hal.on_call = interrupt;
 
     /* A drive's main loop: it ticks from boot, before any line arrives

@@ -41,6 +41,8 @@ static void reply_sink(void *ctx, const char *line, size_t len)
     }
 }
 
+static const daran_hal_t reply_sink_port = {DARAN_STUB_HAL_FUNCTIONS, .write = reply_sink};
+
 static const char *const numbers[] = {
     "20.5", "0.5", "1.25", "9600", "115200", "100000", "-1", "-0", "0.1", "1e-5",
     "123456789", "3.4028235e38", "3.4028236e38", "1.17549435e-38", "1e-45", "7e-46",
@@ -88,7 +90,7 @@ void portable_check(void)
     static daran_stub_t stub;
     static daran_drive_t drive;
     daran_stub_init(&stub, 1);
-    if (daran_init(&drive, &daran_stub_hal, &stub, reply_sink, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &reply_sink_port, &stub) != DARAN_OK) {
         emit_text("init failed\n");
         return;
     }

@@ -48,7 +48,8 @@ static uint32_t clock_ms(void *ctx)
     return 0u;
 }
 
-static const daran_can_port_t can_port = {take_frame, clock_ms, NULL};
+static const daran_hal_t stub_with_can = {DARAN_STUB_HAL_FUNCTIONS, .write = daran_stub_drop_reply,
+                                          .now_ms = clock_ms, .can_send = take_frame};
 
 static void assert_filled(const void *box, size_t from, size_t size, const char *what)
 {
@@ -77,11 +78,10 @@ void tearDown(void)
 static void test_every_instance_is_refused_untouched(void)
 {
     TEST_ASSERT_EQUAL_INT(DARAN_ERR_BUILD_MISMATCH,
-                          daran_init(&drive_box.drive, &daran_stub_hal, &stub,
-                                     daran_stub_drop_reply, NULL));
+                          daran_init(&drive_box.drive, &stub_with_can, &stub));
     assert_filled(&drive_box, 0, sizeof drive_box, "the refused drive was written");
     TEST_ASSERT_EQUAL_INT(DARAN_ERR_BUILD_MISMATCH,
-                          daran_can_init(&can_box.can, &drive_box.drive, &can_port, NULL));
+                          daran_can_init(&can_box.can, &drive_box.drive));
     assert_filled(&can_box, 0, sizeof can_box, "the refused CAN front end was written");
     TEST_ASSERT_EQUAL_INT(DARAN_ERR_BUILD_MISMATCH,
                           daran_can_bridge_init(&bridge_box.bridge, &can_box.can));
@@ -99,10 +99,9 @@ static void test_every_instance_is_refused_untouched(void)
 
 static void test_every_instance_is_accepted_and_ids_agree(void)
 {
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive_box.drive, &daran_stub_hal, &stub,
-                                               daran_stub_drop_reply, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive_box.drive, &stub_with_can, &stub));
     TEST_ASSERT_EQUAL_INT(DARAN_OK,
-                          daran_can_init(&can_box.can, &drive_box.drive, &can_port, NULL));
+                          daran_can_init(&can_box.can, &drive_box.drive));
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_bridge_init(&bridge_box.bridge, &can_box.can));
     static const char line[] = "w axis1.fan.duty 75";
     TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_process_line(&drive_box.drive, line, sizeof line - 1u));

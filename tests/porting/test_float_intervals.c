@@ -25,6 +25,8 @@ static void collect(void *ctx, const char *line, size_t len)
     }
 }
 
+static const daran_hal_t collect_port = {DARAN_STUB_HAL_FUNCTIONS, .write = collect};
+
 static const char *send(const char *line)
 {
     reply_len = 0;
@@ -37,7 +39,7 @@ static const char *send(const char *line)
 void setUp(void)
 {
     daran_stub_init(&stub, 1);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &daran_stub_hal, &stub, collect, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &collect_port, &stub));
 }
 
 void tearDown(void) {}

@@ -21,22 +21,27 @@ typedef struct link {
     size_t len;
 } link_t;
 
-static void write_line(void *ctx, const char *line, size_t len)
-{
-    link_t *link = ctx;
-    TEST_ASSERT_TRUE(link->len + len < sizeof link->replies);
-    memcpy(link->replies + link->len, line, len);
-    link->len += len;
-    link->replies[link->len] = '\0';
-}
+static void write_line(void *ctx, const char *line, size_t len);
 
 /* The port's drive, the core's instance bound to it and the UART's other
- * end: fresh for every test (setUp()). */
+ * end: fresh for every test (setUp()). The fixture is the port's context:
+ * its first member is the drive minimal's functions take. */
 typedef struct fixture {
     minimal_drive_t axis;
     daran_drive_t drive;
     link_t link;
 } fixture_t;
+
+static const daran_hal_t port = {MINIMAL_HAL_FUNCTIONS, .write = write_line};
+
+static void write_line(void *ctx, const char *line, size_t len)
+{
+    link_t *link = &((fixture_t *)ctx)->link;
+    TEST_ASSERT_TRUE(link->len + len < sizeof link->replies);
+    memcpy(link->replies + link->len, line, len);
+    link->len += len;
+    link->replies[link->len] = '\0';
+}
 
 static fixture_t fixture;
 
@@ -44,8 +49,7 @@ void setUp(void)
 {
     memset(&fixture, 0, sizeof fixture);
     minimal_drive_init(&fixture.axis);
-    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_init(&fixture.drive, &minimal_hal, &fixture.axis,
-                                                 write_line, &fixture.link));
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_init(&fixture.drive, &port, &fixture));
 }
 
 void tearDown(void)
@@ -116,13 +120,11 @@ static void test_an_instance_of_another_size_is_refused(void)
                             daran_init_checked(&fixture.drive,
                                                DARAN_BUILD_CHECK(daran_drive_t) ^ (uint32_t)sizeof(daran_drive_t) ^
                                                    (uint32_t)(sizeof(daran_drive_t) - 4u),
-                                               &minimal_hal, &fixture.axis,
-                                               write_line, &fixture.link));
+                                               &port, &fixture));
     TEST_ASSERT_EQUAL_INT64(DARAN_OK,
                             daran_init_checked(&fixture.drive,
                                                DARAN_BUILD_CHECK(daran_drive_t),
-                                               &minimal_hal, &fixture.axis,
-                                               write_line, &fixture.link));
+                                               &port, &fixture));
 }
 
 static void test_a_program_with_another_property_table_is_refused(void)
@@ -132,8 +134,7 @@ static void test_a_program_with_another_property_table_is_refused(void)
     TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BUILD_MISMATCH,
                             daran_init_checked(&fixture.drive,
                                                DARAN_BUILD_CHECK(daran_drive_t) ^ 1u,
-                                               &minimal_hal,
-                                               &fixture.axis, write_line, &fixture.link));
+                                               &port, &fixture));
     TEST_ASSERT_EQUAL_STRING("build mismatch", daran_result_phrase(DARAN_ERR_BUILD_MISMATCH));
 }
 

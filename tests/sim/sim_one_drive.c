@@ -20,10 +20,12 @@ static void collect(void *ctx, const char *line, size_t len)
     reply[reply_len] = '\0';
 }
 
+static const daran_hal_t collect_port = {DARAN_SIM_HAL_FUNCTIONS, .write = collect};
+
 void setUp(void)
 {
     daran_sim_drive_init(&sim, 0u, 1000u);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &daran_sim_hal, &sim, collect, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&drive, &collect_port, &sim));
     reply_len = 0u;
     reply[0] = '\0';
 }

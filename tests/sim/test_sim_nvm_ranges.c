@@ -45,6 +45,8 @@ static void discard(void *ctx, const char *line, size_t len)
     (void)len;
 }
 
+static const daran_hal_t discard_port = {DARAN_SIM_HAL_FUNCTIONS, .write = discard};
+
 static size_t value_text(daran_prop_t p, daran_value_t v, char *out, size_t size)
 {
     switch (rows[p].type) {
@@ -69,7 +71,7 @@ static bool w_accepts(daran_prop_t p, daran_value_t v)
     char line[200];
     size_t n = 0u;
     daran_sim_drive_init(&sim, 0u, 1000u);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&core, &daran_sim_hal, &sim, discard, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&core, &discard_port, &sim));
     memcpy(line, "w ", 2u);
     n = 2u;
     if (rows[p].axis) {
@@ -124,7 +126,7 @@ static void test_the_attack_image_boots_on_defaults_with_the_warning(void)
         /* and it moves as a drive on defaults: t 1 10 settles at 10 deg */
         static daran_drive_t core;
         uint32_t k;
-        TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&core, &daran_sim_hal, &d, discard, NULL));
+        TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_init(&core, &discard_port, &d));
         TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_process_line(&core, "t 1 10", 6u));
         for (k = 0; k < 2000u; k++) {
             daran_sim_model_tick(&d.model);

@@ -131,12 +131,17 @@ static daran_result_t chopper_set_frequency(void *ctx, float hz)
                : DARAN_ERR_MOTOR_FAULT;
 }
 
+static brake_chopper_t chopper = {chopper_set_frequency, &sim};
+
+brake_chopper_t *brake_chopper_of(void *ctx)
+{
+    (void)ctx;
+    return &chopper;
+}
+
 static void test_the_ports_own_command_drives_the_simulated_row(void)
 {
-    static brake_chopper_t chopper;
-    chopper.set_frequency = chopper_set_frequency;
-    chopper.ctx = &sim;
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, brake_port_attach(&drive, &chopper));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, brake_port_attach(&drive));
     TEST_ASSERT_EQUAL_STRING("", sim_say("sb 1 20000"));
     TEST_ASSERT_EQUAL_STRING("20000", sim_say("r axis0.brake.chopper_hz"));
     TEST_ASSERT_EQUAL_STRING("error: value out of range", sim_say("sb 1 60000"));

@@ -29,6 +29,8 @@ static void write_line(void *ctx, const char *line, size_t len)
     exit(1);
 }
 
+static const daran_hal_t write_line_port = {MINIMAL_HAL_FUNCTIONS, .write = write_line};
+
 static void *control_loop(void *arg)
 {
     (void)arg;
@@ -56,7 +58,7 @@ int main(int argc, char **argv)
         moves_total = strtoul(argv[1], NULL, 10);
     }
     minimal_drive_init(&axis);
-    if (daran_init(&drive, &minimal_hal, &axis, write_line, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &write_line_port, &axis) != DARAN_OK) {
         return 2;
     }
     pthread_t thread;

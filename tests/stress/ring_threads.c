@@ -104,11 +104,12 @@ static void *producer(void *arg)
 
 int main(int argc, char **argv)
 {
-    static const daran_hal_t hal = {hal_get, hal_set, hal_move, hal_action};
+    static const daran_hal_t hal = {
+        .get = hal_get, .set = hal_set, .move = hal_move, .action = hal_action, .write = write_line};
     if (argc > 1) {
         lines_total = strtoul(argv[1], NULL, 10);
     }
-    if (daran_init(&drive, &hal, NULL, write_line, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &hal, NULL) != DARAN_OK) {
         return 2;
     }
     pthread_t thread;

@@ -63,6 +63,8 @@ static void drive_write(void *ctx, const char *text, size_t len)
     wire_append(text, len);
 }
 
+static const daran_hal_t drive_write_port = {MINIMAL_HAL_FUNCTIONS, .write = drive_write};
+
 /* The request goes to the core, whose reply goes onto the wire. */
 static bool port_write(void *ctx, const char *bytes, size_t len)
 {
@@ -210,7 +212,7 @@ static void prepare(void)
     requests[4].value.f32 = 300.0f;
 
     minimal_drive_init(&hal);
-    fail_unless(daran_init(&drive, &minimal_hal, &hal, drive_write, NULL) == DARAN_OK);
+    fail_unless(daran_init(&drive, &drive_write_port, &hal) == DARAN_OK);
     daran_client_link_config_t config = {false, 0, 5u, NULL, NULL, NULL, NULL};
     fail_unless(daran_client_link_init(&link, &transport, &config) == DARAN_OK);
     config.checksum = true;

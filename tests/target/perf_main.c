@@ -76,8 +76,6 @@ static daran_result_t perf_action(void *ctx, daran_action_t action)
     return DARAN_OK;
 }
 
-static const daran_hal_t perf_hal = {perf_get, perf_set, perf_move, perf_action};
-
 static void drop_reply(void *ctx, const char *line, size_t len)
 {
     (void)ctx;
@@ -130,9 +128,19 @@ static uint32_t perf_clock(void *ctx)
     return clock_ms;
 }
 
-static const daran_can_port_t perf_can_port = {drop_frame, perf_clock, NULL};
 static daran_can_t can;
 #endif
+
+static const daran_hal_t perf_hal = {.get = perf_get,
+                                     .set = perf_set,
+                                     .move = perf_move,
+                                     .action = perf_action,
+                                     .write = drop_reply,
+#if DARAN_ENABLE_CAN
+                                     .now_ms = perf_clock,
+                                     .can_send = drop_frame
+#endif
+};
 
 static daran_drive_t drive;
 static size_t lengths[sizeof lines / sizeof lines[0]];
@@ -144,11 +152,11 @@ int main(void)
     values[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
     values[DARAN_PROP_UART_BAUDRATE].u32 = 115200u;
     values[DARAN_PROP_CAN_PROTOCOL].u32 = 1u;
-    if (daran_init(&drive, &perf_hal, NULL, drop_reply, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &perf_hal, NULL) != DARAN_OK) {
         daran_board_exit(1);
     }
 #if DARAN_ENABLE_CAN
-    if (daran_can_init(&can, &drive, &perf_can_port, NULL) != DARAN_OK) {
+    if (daran_can_init(&can, &drive) != DARAN_OK) {
         daran_board_exit(1);
     }
     (void)daran_can_poll(&can); /* this millisecond's look is taken: frames are measured alone */

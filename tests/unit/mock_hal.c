@@ -67,7 +67,8 @@ mock_t *mock_new_slot(int slot, uint32_t id)
     m->rec.observer = mock_observe;
     m->rec.observer_ctx = m;
     mock_defaults(m, id);
-    daran_result_t r = daran_init(&m->drive, &mock_hal_fns, m, mock_write, m);
+    m->hal = mock_hal_fns;
+    daran_result_t r = daran_init(&m->drive, &m->hal, m);
     TEST_ASSERT_EQUAL_INT(DARAN_OK, r);
     return m;
 }
@@ -75,7 +76,7 @@ mock_t *mock_new_slot(int slot, uint32_t id)
 mock_t *mock_new(void) { return mock_new_slot(0, 1); }
 mock_t *mock_new_id(uint32_t id) { return mock_new_slot(0, id); }
 
-void mock_enable_forward(mock_t *m) { daran_set_forward(&m->drive, mock_forward, m); }
+void mock_enable_forward(mock_t *m) { m->hal.forward = mock_forward; }
 
 void mock_clear(mock_t *m)
 {
@@ -203,8 +204,7 @@ static daran_result_t mock_store_action(void *ctx, daran_action_t action)
     return DARAN_OK;
 }
 
-static const daran_hal_t mock_store_fns = {mock_store_get, mock_store_set, mock_store_move,
-                                           mock_store_action};
+static const daran_hal_t mock_store_fns = {.get = mock_store_get, .set = mock_store_set, .move = mock_store_move, .action = mock_store_action};
 
 /* ---- the HAL a drive is bound to: the mock's recorder ---- */
 
@@ -232,7 +232,8 @@ static daran_result_t mock_action(void *ctx, daran_action_t action)
     return daran_recorder_hal.action(&m->rec, action);
 }
 
-const daran_hal_t mock_hal_fns = {mock_get, mock_set, mock_move, mock_action};
+const daran_hal_t mock_hal_fns = {mock_get, mock_set, mock_move, mock_action, mock_write, NULL,
+                                  NULL, NULL, NULL};
 
 void mock_write(void *ctx, const char *line, size_t len)
 {

@@ -53,6 +53,9 @@ typedef struct mock_forward {
 
 typedef struct mock {
     daran_drive_t drive;
+    /* The drive's port description: mock_hal_fns at first; a test changes a
+     * member (the forward hook, the CAN functions) in place. */
+    daran_hal_t hal;
     daran_value_t props[DARAN_PROP_COUNT];
     bool react; /* model state changes on actions/sets (default true) */
 
@@ -85,7 +88,7 @@ extern const daran_hal_t mock_hal_fns;
 void mock_write(void *ctx, const char *line, size_t len);
 void mock_forward(void *ctx, uint8_t id, const char *line, size_t len);
 
-/* Register the recording forward hook. */
+/* Register the recording forward hook (m->hal.forward). */
 void mock_enable_forward(mock_t *m);
 
 /* Forget replies, calls, getter count and forwards. */

@@ -145,7 +145,7 @@ static void test_forward_hook_can_be_removed(void)
     mock_enable_forward(m);
     ASSERT_SILENT(m, "t 2 10");
     TEST_ASSERT_EQUAL_INT64(1, m->n_fwd);
-    daran_set_forward(&m->drive, NULL, NULL);
+    m->hal.forward = NULL;
     ASSERT_SILENT(m, "t 2 10");
     TEST_ASSERT_EQUAL_INT64(0, m->n_fwd);
 }

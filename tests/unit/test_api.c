@@ -26,32 +26,34 @@ void tearDown(void)
 
 static daran_drive_t api_drive;
 
-static void test_init_accepts_a_complete_hal(void)
+static void test_init_accepts_a_complete_hal_without_its_optional_members(void)
 {
-    const daran_hal_t hal = {ok_get, ok_set, ok_move, ok_action};
-    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_init(&api_drive, &hal, NULL, ok_write, NULL));
+    /* forward, now_ms, can_send and can_system left NULL */
+    const daran_hal_t hal = {ok_get, ok_set, ok_move, ok_action, ok_write, NULL, NULL, NULL, NULL};
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_init(&api_drive, &hal, NULL));
 }
 
-static void test_init_rejects_a_null_drive_hal_or_write(void)
+static void test_init_rejects_a_null_drive_or_hal(void)
 {
-    const daran_hal_t hal = {ok_get, ok_set, ok_move, ok_action};
-    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(NULL, &hal, NULL, ok_write, NULL));
-    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, NULL, NULL, ok_write, NULL));
-    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &hal, NULL, NULL, NULL));
+    const daran_hal_t hal = {ok_get, ok_set, ok_move, ok_action, ok_write, NULL, NULL, NULL, NULL};
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(NULL, &hal, NULL));
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, NULL, NULL));
 }
 
-static void test_init_rejects_a_hal_with_a_null_member(void)
+static void test_init_rejects_a_hal_without_a_required_member(void)
 {
-    const daran_hal_t no_get = {NULL, ok_set, ok_move, ok_action};
-    const daran_hal_t no_set = {ok_get, NULL, ok_move, ok_action};
-    const daran_hal_t no_move = {ok_get, ok_set, NULL, ok_action};
-    const daran_hal_t no_action = {ok_get, ok_set, ok_move, NULL};
-    const daran_hal_t none = {NULL, NULL, NULL, NULL};
-    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &no_get, NULL, ok_write, NULL));
-    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &no_set, NULL, ok_write, NULL));
-    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &no_move, NULL, ok_write, NULL));
-    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &no_action, NULL, ok_write, NULL));
-    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &none, NULL, ok_write, NULL));
+    const daran_hal_t no_get = {NULL, ok_set, ok_move, ok_action, ok_write, NULL, NULL, NULL, NULL};
+    const daran_hal_t no_set = {ok_get, NULL, ok_move, ok_action, ok_write, NULL, NULL, NULL, NULL};
+    const daran_hal_t no_move = {ok_get, ok_set, NULL, ok_action, ok_write, NULL, NULL, NULL, NULL};
+    const daran_hal_t no_action = {ok_get, ok_set, ok_move, NULL, ok_write, NULL, NULL, NULL, NULL};
+    const daran_hal_t no_write = {ok_get, ok_set, ok_move, ok_action, NULL, NULL, NULL, NULL, NULL};
+    const daran_hal_t none = {NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &no_get, NULL));
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &no_set, NULL));
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &no_move, NULL));
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &no_action, NULL));
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &no_write, NULL));
+    TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, daran_init(&api_drive, &none, NULL));
 }
 
 static void test_init_resets_ring_partial_line_and_preset(void)
@@ -62,7 +64,7 @@ static void test_init_resets_ring_partial_line_and_preset(void)
     TEST_ASSERT_EQUAL_INT64(2, daran_rx_write(&m->drive, "f ", 2));
     (void)daran_poll(&m->drive);
     TEST_ASSERT_EQUAL_INT64(1, daran_rx_write(&m->drive, "g", 1));
-    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_init(&m->drive, &mock_hal_fns, m, mock_write, m));
+    TEST_ASSERT_EQUAL_INT64(DARAN_OK, daran_init(&m->drive, &m->hal, m));
     mock_clear(m);
     mock_send_raw(m, "f 1\n");
     ASSERT_REPLY(m, "0 0\n");
@@ -201,9 +203,9 @@ static void test_property_paths_are_printable_and_fit_a_line(void)
 int main(void)
 {
     UNITY_BEGIN();
-    RUN_TEST(test_init_accepts_a_complete_hal);
-    RUN_TEST(test_init_rejects_a_null_drive_hal_or_write);
-    RUN_TEST(test_init_rejects_a_hal_with_a_null_member);
+    RUN_TEST(test_init_accepts_a_complete_hal_without_its_optional_members);
+    RUN_TEST(test_init_rejects_a_null_drive_or_hal);
+    RUN_TEST(test_init_rejects_a_hal_without_a_required_member);
     RUN_TEST(test_init_resets_ring_partial_line_and_preset);
     RUN_TEST(test_poll_with_nothing_queued_processes_nothing);
     RUN_TEST(test_version_is_major_minor_patch);

@@ -50,9 +50,12 @@ static mock_t *m; /* the drive behind the front end (mock slot 0) */
 static char last_frame[96]; /* the frame being run, for failure messages */
 static const char *context;  /* the recorded call being replayed, or NULL */
 
+/* The drive's port description gets these beside the mock's HAL; their
+ * context is the mock, the bus is this file's. */
 static bool bus_send(void *ctx, const daran_can_frame_t *frame)
 {
-    bus_t *b = ctx;
+    (void)ctx;
+    bus_t *b = &bus;
     if (b->refuse) {
         b->n_refused++;
         return false;
@@ -69,36 +72,45 @@ static bool bus_send(void *ctx, const daran_can_frame_t *frame)
 
 static uint32_t bus_now(void *ctx)
 {
-    return ((bus_t *)ctx)->now_ms;
+    (void)ctx;
+    return bus.now_ms;
 }
 
 static void bus_system_hook(void *ctx, uint32_t subcode, uint16_t data1, uint16_t data2)
 {
-    bus_t *b = ctx;
+    (void)ctx;
+    bus_t *b = &bus;
     b->n_hook++;
     b->hook_subcode = subcode;
     b->hook_data1 = data1;
     b->hook_data2 = data2;
 }
 
-static const daran_can_port_t test_port = {bus_send, bus_now, bus_system_hook};
-static const daran_can_port_t port_without_hook = {bus_send, bus_now, NULL};
+/* Give @p mock's port description the test bus (with or without the system
+ * hook). */
+static void plug_into_bus(mock_t *mock, bool with_hook)
+{
+    mock->hal.now_ms = bus_now;
+    mock->hal.can_send = bus_send;
+    mock->hal.can_system = with_hook ? bus_system_hook : NULL;
+}
 
 /* A drive with node id @p id, CAN protocol 1, bound to a fresh front end on
- * @p port; the clock reads 0. */
-static mock_t *start_drive_on(uint32_t id, const daran_can_port_t *port)
+ * the test bus, its port with or without the system hook; the clock reads 0. */
+static mock_t *start_drive_on(uint32_t id, bool with_hook)
 {
     memset(&bus, 0, sizeof bus);
     m = mock_new_id(id);
     m->props[DARAN_PROP_CAN_PROTOCOL].u32 = 1;
     bus.mock = m;
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive, port, &bus));
+    plug_into_bus(m, with_hook);
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive));
     return m;
 }
 
 static mock_t *start_drive(uint32_t id)
 {
-    return start_drive_on(id, &test_port);
+    return start_drive_on(id, true);
 }
 
 void setUp(void)
@@ -1621,7 +1633,7 @@ static void test_c15_protocol_0_at_init_leaves_the_front_end_silent(void)
     m->props[DARAN_PROP_CAN_HEARTBEAT_MS].u32 = 100;
     m->props[DARAN_PROP_CAN_TIMEOUT_MS].u32 = 50;
     m->props[DARAN_PROP_ENABLE_REPLY_STATE].u32 = 1;
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive, &test_port, &bus));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive));
     expect_silent_front_end();
 }
 
@@ -1632,11 +1644,11 @@ static void test_c15_a_protocol_written_over_can_applies_at_the_next_init(void)
     /* still speaking until the next boot */
     deliver(READ_FRAME(1, 21002, 3));
     EXPECT_SENT(0, 0x03E, "0a 52 03 00 00 00 00 00");
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive, &test_port, &bus));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive));
     m->props[DARAN_PROP_CAN_HEARTBEAT_MS].u32 = 100;
     expect_silent_front_end();
     m->props[DARAN_PROP_CAN_PROTOCOL].u32 = 1;
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive, &test_port, &bus));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive));
     deliver(READ_FRAME(1, 21002, 3));
     EXPECT_SENT(0, 0x03E, "0a 52 03 00 01 00 00 00");
 }
@@ -1920,7 +1932,7 @@ static void test_c19_restore_and_firmware_sub_codes_go_to_the_port_hook_with_the
 
 static void test_c19_without_a_hook_restore_and_firmware_do_nothing(void)
 {
-    start_drive_on(1, &port_without_hook);
+    start_drive_on(1, false);
     deliver(system_frame(1, 0x00u, 1, 2));
     EXPECT_ONLY_FED();
     deliver(system_frame(1, 0x07u, 1, 2));
@@ -2177,7 +2189,7 @@ static void test_unsent_counts_the_frames_the_port_refused(void)
     TEST_ASSERT_EQUAL_UINT(1, bus.n_sent);
     TEST_ASSERT_EQUAL_UINT32(4, daran_can_unsent(&can));
     /* a new init starts the counts again */
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive, &test_port, &bus));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive));
     TEST_ASSERT_EQUAL_UINT32(0, daran_can_unsent(&can));
     TEST_ASSERT_EQUAL_UINT32(0, daran_can_dropped(&can));
 }
@@ -2187,15 +2199,19 @@ static void test_unsent_counts_the_frames_the_port_refused(void)
 static void test_can_init_refuses_missing_pointers_and_port_functions(void)
 {
     daran_can_t other;
-    static const daran_can_port_t no_send = {NULL, bus_now, bus_system_hook};
-    static const daran_can_port_t no_clock = {bus_send, NULL, bus_system_hook};
-    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(NULL, &m->drive, &test_port, &bus));
-    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(&other, NULL, &test_port, &bus));
-    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(&other, &m->drive, NULL, &bus));
-    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(&other, &m->drive, &no_send, &bus));
-    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(&other, &m->drive, &no_clock, &bus));
+    daran_drive_t never_initialised;
+    memset(&never_initialised, 0, sizeof never_initialised);
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(NULL, &m->drive));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(&other, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(&other, &never_initialised));
+    m->hal.can_send = NULL;
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(&other, &m->drive));
+    plug_into_bus(m, true);
+    m->hal.now_ms = NULL;
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_can_init(&other, &m->drive));
     /* the hook is optional */
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&other, &m->drive, &port_without_hook, &bus));
+    plug_into_bus(m, false);
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&other, &m->drive));
     /* nothing of the refused calls reached the drive or the bus */
     TEST_ASSERT_EQUAL_UINT(0, m->n_calls);
     TEST_ASSERT_EQUAL_UINT(0, bus.n_sent);
@@ -2205,7 +2221,7 @@ static void test_can_init_reads_the_protocol_and_nothing_else_changes(void)
 {
     mock_clear(m);
     bus.now_ms = 12345;
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive, &test_port, &bus));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_can_init(&can, &m->drive));
     TEST_ASSERT_EQUAL_UINT(0, m->n_calls);
     TEST_ASSERT_TRUE(m->n_gets >= 1u);
     TEST_ASSERT_EQUAL_UINT(0, bus.n_sent);

@@ -184,11 +184,13 @@ typedef struct brake {
     daran_result_t answer;
 } brake_t;
 static brake_t brake;
+static mock_t *port_m; /* the drive port_mock() made: its context is what a handler gets */
 
 static daran_result_t sb_handler(daran_drive_t *drive, const daran_args_t *args, void *ctx)
 {
     (void)drive;
-    brake_t *b = ctx;
+    TEST_ASSERT_EQUAL_PTR(port_m, ctx); /* the drive's one context (daran_init()) */
+    brake_t *b = &brake;
     float hz;
     daran_result_t result = daran_args_f32(args, 0, &hz);
     if (result != DARAN_OK) {
@@ -233,8 +235,9 @@ static daran_result_t bq_handler(daran_drive_t *drive, const daran_args_t *args,
 /* `bu id n`: an unsigned count, refused above 1000. */
 static daran_result_t bu_handler(daran_drive_t *drive, const daran_args_t *args, void *ctx)
 {
+    TEST_ASSERT_EQUAL_PTR(port_m, ctx);
     (void)drive;
-    brake_t *b = ctx;
+    brake_t *b = &brake;
     uint32_t n;
     daran_result_t result = daran_args_u32(args, 0, &n);
     if (result == DARAN_OK && n > 1000u) {
@@ -255,8 +258,9 @@ static const daran_port_command_t port_commands[] = {
 static mock_t *port_mock(void)
 {
     mock_t *m = mock_new();
+    port_m = m;
     memset(&brake, 0, sizeof brake);
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, port_commands, 3, &brake));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, port_commands, 3));
     return m;
 }
 
@@ -347,6 +351,30 @@ static daran_result_t dot_handler(daran_drive_t *drive, const daran_args_t *args
     return DARAN_OK;
 }
 
+/* One handler for two words: it answers the word it was called for. */
+static daran_result_t echo_word_handler(daran_drive_t *drive, const daran_args_t *args, void *ctx)
+{
+    (void)ctx;
+    size_t len = 0;
+    const char *word = daran_args_word(args, &len);
+    daran_reply(drive, word, len);
+    return DARAN_OK;
+}
+
+static void test_a_handler_tells_its_words_apart_by_daran_args_word(void)
+{
+    static const daran_port_command_t two[] = {
+        {"ping", 0, 0, DARAN_PORT_COMMAND_QUERY, echo_word_handler, ""},
+        {"pong", 0, 1, DARAN_PORT_COMMAND_QUERY, echo_word_handler, "[x]"}};
+    mock_t *m = mock_new();
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, two, 2));
+    mock_send_line(m, "  pong 1 5");
+    TEST_ASSERT_EQUAL_STRING("pong\n", m->out);
+    mock_clear(m);
+    mock_send_line(m, "ping 1");
+    TEST_ASSERT_EQUAL_STRING("ping\n", m->out);
+}
+
 /* A line of exactly DARAN_LINE_MAX bytes has no line end stored after it, so
  * the byte past a path that ends it is the reply buffer's first: after a
  * port reply of ".", "axis2" is still a path without its dot (a system
@@ -355,7 +383,7 @@ static void test_a_path_that_ends_a_full_length_line_reads_nothing_past_it(void)
 {
     static const daran_port_command_t dot[] = {{"dt", 0, 0, DARAN_PORT_COMMAND_QUERY, dot_handler, ""}};
     mock_t *m = mock_new();
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, dot, 1, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, dot, 1));
     char line[DARAN_LINE_MAX + 1];
     memset(line, ' ', DARAN_LINE_MAX);
     line[DARAN_LINE_MAX] = '\0';
@@ -379,12 +407,12 @@ static void test_a_table_of_255_port_commands_is_taken_and_256_refused(void)
         table[i] = command;
     }
     mock_t *m = port_mock();
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, table, 255, &brake));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, table, 255));
     char line[16];
     snprintf(line, sizeof line, "%s 1 3", words[254]);
     ASSERT_SILENT(m, line);
     TEST_ASSERT_EQUAL_UINT(1, brake.calls);
-    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_set_port_commands(&m->drive, table, 256, &brake));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_set_port_commands(&m->drive, table, 256));
     ASSERT_SILENT(m, line); /* the table it had still works */
     TEST_ASSERT_EQUAL_UINT(2, brake.calls);
 }
@@ -439,20 +467,20 @@ static void test_a_bad_port_table_is_refused_whole_and_the_drive_keeps_its_own(v
     mock_t *m = port_mock();
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT,
-                              daran_set_port_commands(&m->drive, bad[i].table, bad[i].count, NULL));
+                              daran_set_port_commands(&m->drive, bad[i].table, bad[i].count));
         ASSERT_SILENT(m, "sb 1 3"); /* the table it had still works */
     }
     TEST_ASSERT_EQUAL_UINT(sizeof bad / sizeof bad[0], brake.calls);
     static const daran_port_command_t longest[] = {{"abcdefgh", 0, DARAN_FIELDS_MAX - 3u, 0, sb_handler, ""}};
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, longest, 1, &brake));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, longest, 1));
     ASSERT_ERROR(m, "sb 1 3", "unknown command");
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, NULL, 0, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, NULL, 0));
     ASSERT_ERROR(m, "abcdefgh 1", "unknown command");
-    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_set_port_commands(NULL, port_commands, 3, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_ERR_BAD_ARGUMENT, daran_set_port_commands(NULL, port_commands, 3));
     /* the alphabet's ends are letters too */
     static const daran_port_command_t a_to_z[] = {{"az", 0, 0, 0, sb_handler, ""},
                                                   {"zap", 0, 0, 0, sb_handler, ""}};
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, a_to_z, 2, &brake));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, a_to_z, 2));
 }
 
 static daran_result_t probe_results[3];
@@ -473,7 +501,7 @@ static void test_args_parsers_refuse_an_index_past_the_values(void)
 {
     static const daran_port_command_t probe[] = {{"pr", 0, 0, 0, probe_handler, ""}};
     mock_t *m = mock_new();
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, probe, 1, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, probe, 1));
     ASSERT_SILENT(m, "pr 1");
     for (int i = 0; i < 3; i++) {
         TEST_ASSERT_EQUAL_INT(DARAN_ERR_INVALID_FORMAT, probe_results[i]);
@@ -493,7 +521,7 @@ static void test_args_u32_takes_every_u32_up_to_its_largest(void)
 {
     static const daran_port_command_t probe[] = {{"pu", 1, 1, 0, u32_handler, "n"}};
     mock_t *m = mock_new();
-    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, probe, 1, NULL));
+    TEST_ASSERT_EQUAL_INT(DARAN_OK, daran_set_port_commands(&m->drive, probe, 1));
     ASSERT_SILENT(m, "pu 1 4294967295");
     TEST_ASSERT_EQUAL_UINT32(UINT32_MAX, u32_seen);
     ASSERT_SILENT(m, "pu 1 0");
@@ -682,6 +710,7 @@ int main(void)
     RUN_TEST(test_a_handler_error_is_answered_with_its_phrase);
     RUN_TEST(test_port_commands_are_addressed_like_the_core_s);
     RUN_TEST(test_a_path_that_ends_a_full_length_line_reads_nothing_past_it);
+    RUN_TEST(test_a_handler_tells_its_words_apart_by_daran_args_word);
     RUN_TEST(test_a_table_of_255_port_commands_is_taken_and_256_refused);
     RUN_TEST(test_a_port_query_replies_through_daran_reply_with_the_request_checksum);
 #if DARAN_ENABLE_HELP

@@ -37,6 +37,8 @@ static void collect(void *ctx, const char *line, size_t len)
     }
 }
 
+static const daran_hal_t collect_port = {DARAN_SIM_HAL_FUNCTIONS, .write = collect};
+
 static const char *send(const char *line)
 {
     reply_len = 0;
@@ -86,7 +88,7 @@ int main(void)
 
     daran_sim_drive_init(&sim, 0u, 1000u);
     daran_sim_drive_extend(&sim, &fan_extension, &fan);
-    check(daran_init(&drive, &daran_sim_hal, &sim, collect, NULL) == DARAN_OK,
+    check(daran_init(&drive, &collect_port, &sim) == DARAN_OK,
           "the X1's core binds to the simulated drive (same options header)");
 
     check(strcmp(send("w axis0.fan.duty 0.75"), "") == 0 && fan.duty == 0.75f && fan.writes == 1,

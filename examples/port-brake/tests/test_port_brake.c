@@ -87,6 +87,12 @@ static daran_result_t other_handler(daran_drive_t *drive, const daran_args_t *ar
 static daran_drive_t drive;
 static brake_chopper_t chopper = {chopper_set, NULL};
 
+brake_chopper_t *brake_chopper_of(void *ctx)
+{
+    (void)ctx;
+    return &chopper;
+}
+
 /* Run one line; the reply text (without line ends) in out. */
 static daran_result_t run(const char *line)
 {
@@ -105,11 +111,12 @@ static int replied(const char *text)
 
 int main(void)
 {
-    static const daran_hal_t hal = {get, set, move, action};
+    static const daran_hal_t hal = {.get = get, .set = set, .move = move, .action = action,
+                                    .write = write_line};
     props[DARAN_PROP_CAN_NODE_ID].u32 = 1;
     props[DARAN_PROP_CURRENT_STATE].u32 = DARAN_STATE_CLOSED_LOOP;
-    CHECK(daran_init(&drive, &hal, NULL, write_line, NULL) == DARAN_OK);
-    CHECK(brake_port_attach(&drive, &chopper) == DARAN_OK);
+    CHECK(daran_init(&drive, &hal, NULL) == DARAN_OK);
+    CHECK(brake_port_attach(&drive) == DARAN_OK);
     CHECK(run("sb 1 1000") == DARAN_OK && chopper_calls == 1 && chopper_hz == 1000.0f &&
           out_len == 0u);
 
@@ -122,7 +129,7 @@ int main(void)
             {"sb", 1, 1, 0, other_handler, "hz"},
             {vendor[i], 0, 1, 0, other_handler, ""},
         };
-        daran_result_t r = daran_set_port_commands(&drive, table, 2, NULL);
+        daran_result_t r = daran_set_port_commands(&drive, table, 2);
         if (r != DARAN_ERR_BAD_ARGUMENT) {
             printf("a table with the vendor word \"%s\" was accepted (%d)\n", vendor[i], (int)r);
             failures++;
@@ -143,7 +150,7 @@ int main(void)
         {{"sb", 1, 1, 0, other_handler, "hz"}, {"sa", 0, 6, 0, other_handler, ""}},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        if (daran_set_port_commands(&drive, bad[i], 2, NULL) != DARAN_ERR_BAD_ARGUMENT) {
+        if (daran_set_port_commands(&drive, bad[i], 2) != DARAN_ERR_BAD_ARGUMENT) {
             printf("malformed table %zu was accepted\n", i);
             failures++;
         }
@@ -151,8 +158,8 @@ int main(void)
     /* The longest word (8 letters) and 5 values are fine. */
     const daran_port_command_t longest[] = {{"abcdefgh", 0, 5, 0, other_handler, ""}};
     daran_drive_t other;
-    CHECK(daran_init(&other, &hal, NULL, write_line, NULL) == DARAN_OK);
-    CHECK(daran_set_port_commands(&other, longest, 1, NULL) == DARAN_OK);
+    CHECK(daran_init(&other, &hal, NULL) == DARAN_OK);
+    CHECK(daran_set_port_commands(&other, longest, 1) == DARAN_OK);
 
     /* All or nothing: the drive still has the example's table after every
      * refusal, and the vendor's `t` is still the vendor's. */

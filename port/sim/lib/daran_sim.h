@@ -8,8 +8,9 @@
  *
  *     static daran_sim_drive_t sim;
  *     static daran_drive_t drive;
+ *     static const daran_hal_t hal = {DARAN_SIM_HAL_FUNCTIONS, .write = write_reply};
  *     daran_sim_drive_init(&sim, 0u, 1000u);            // drive id 1, 1 kHz ticks
- *     daran_init(&drive, &daran_sim_hal, &sim, write_reply, ctx);
+ *     daran_init(&drive, &hal, &sim);                   // write_reply gets &sim
  *     daran_process_line(&drive, "q 1 90", 6);          // a trapezoid to 90 deg
  *     for (int i = 0; i < 2000; i++) daran_sim_drive_tick(&sim);   // 2 s
  *
@@ -18,7 +19,7 @@
  *                    a port's own rows (DARAN_PORT_PROPERTY_LIST) kept in a
  *                    plain store (daran_sim_is_port_prop())
  *   sim_nvm.h        the two-slot configuration store behind `ss`/`se`/boot
- *   sim_drive.h      one drive: model + NVM + identity, and daran_sim_hal
+ *   sim_drive.h      one drive: model + NVM + identity, and its HAL functions
  *   sim_extension.h  the test's own properties layered over the model
  *   sim_faults.h     stall, overspeed, overtemp, undervoltage, nvm-corrupt;
  *                    HAL refusals; failing NVM saves

@@ -20,7 +20,7 @@ static void node_start(daran_sim_bus_t *bus, uint32_t index)
 {
     daran_sim_node_t *n = &bus->node[index];
     n->out_len = 0u;
-    if (daran_init(&n->proto, &daran_sim_hal, &n->sim, node_write, n) != DARAN_OK) {
+    if (daran_init(&n->proto, &n->port, n) != DARAN_OK) {
         n->out_lost++; /* cannot happen: every pointer is set */
     }
     if (bus->setup != NULL) {
@@ -43,6 +43,9 @@ daran_result_t daran_sim_bus_init(daran_sim_bus_t *bus, uint32_t count, uint32_t
         daran_sim_node_t *n = &bus->node[i];
         daran_sim_drive_init(&n->sim, i, tick_hz);
         n->out_lost = 0u;
+        n->port = (daran_hal_t){DARAN_SIM_HAL_FUNCTIONS, .write = node_write};
+        n->can = NULL;
+        n->index = i;
         node_start(bus, i);
     }
     return DARAN_OK;

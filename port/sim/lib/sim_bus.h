@@ -23,8 +23,14 @@ extern "C" {
 #define DARAN_SIM_OUT_MAX 16384u
 
 typedef struct daran_sim_node {
-    daran_sim_drive_t sim;
+    daran_sim_drive_t sim;   /* first: the node is its HAL functions' context too */
     daran_drive_t proto;
+    /* proto's port description, its context the node: the simulated
+     * drive's HAL functions and the node's reply buffer; a CAN bus
+     * (sim_can.h) adds its clock and transmit. */
+    daran_hal_t port;
+    struct daran_sim_can *can; /* the bus it is on, NULL for none */
+    uint32_t index;            /* 0-based, on the line and the bus */
     char out[DARAN_SIM_OUT_MAX]; /* replies not yet collected */
     size_t out_len;
     uint32_t out_lost;           /* reply bytes that did not fit */

@@ -5,19 +5,19 @@
 
 #if DARAN_ENABLE_CAN
 
-static bool port_send(void *ctx, const daran_can_frame_t *frame)
+/* The drive's side of its controller: its port description's CAN
+ * transmit and clock, with the node as context. */
+static bool node_can_send(void *ctx, const daran_can_frame_t *frame)
 {
-    const daran_sim_can_port_ctx_t *port = ctx;
-    return daran_sim_can_bus_send(&port->owner->wire, port->index, frame);
+    const daran_sim_node_t *node = ctx;
+    return daran_sim_can_bus_send(&node->can->wire, node->index, frame);
 }
 
-static uint32_t port_now_ms(void *ctx)
+static uint32_t node_now_ms(void *ctx)
 {
-    const daran_sim_can_port_ctx_t *port = ctx;
-    return (uint32_t)(port->owner->wire.now_ns / 1000000u); /* wraps, as a millisecond timer */
+    const daran_sim_node_t *node = ctx;
+    return (uint32_t)(node->can->wire.now_ns / 1000000u); /* wraps, as a millisecond timer */
 }
-
-const daran_can_port_t daran_sim_can_port = {port_send, port_now_ms, NULL};
 
 /* The bus hands a frame to a drive's controller: into its receive ring,
  * and the drive runs it at once, as a firmware that polls its front end
@@ -37,8 +37,7 @@ static void deliver_to_drive(void *ctx, const daran_can_frame_t *frame, uint64_t
 static daran_result_t start_front_end(daran_sim_can_t *can, uint32_t index)
 {
     daran_sim_can_bus_reset_node(&can->wire, index);
-    return daran_can_init(&can->front[index], &can->line->node[index].proto, &daran_sim_can_port,
-                          &can->port_ctx[index]);
+    return daran_can_init(&can->front[index], &can->line->node[index].proto);
 }
 
 /* A power cycle started a new protocol instance: the port's own setup, then
@@ -79,6 +78,10 @@ daran_result_t daran_sim_can_attach(daran_sim_can_t *can, daran_sim_bus_t *line)
     daran_sim_can_bus_init(&can->wire, DARAN_SIM_CAN_BIT_RATE,
                            daran_sim_can_tick_ns(line, line->ticks));
     for (i = 0; i < line->count; i++) {
+        daran_sim_node_t *node = &line->node[i];
+        node->can = can;
+        node->port.now_ms = node_now_ms;
+        node->port.can_send = node_can_send;
         can->port_ctx[i].owner = can;
         can->port_ctx[i].index = i;
         (void)daran_sim_can_bus_add_node(&can->wire, deliver_to_drive, &can->port_ctx[i]);

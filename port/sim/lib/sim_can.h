@@ -40,7 +40,7 @@ typedef struct daran_sim_can daran_sim_can_t;
  * daran_can_bridge_init(): daran_can_init() forgets one. */
 typedef void (*daran_sim_front_end_fn)(void *ctx, uint32_t index, daran_can_t *front);
 
-/* The context of one drive's CAN port. */
+/* The bus's context for delivering to one drive. */
 typedef struct daran_sim_can_port_ctx {
     daran_sim_can_t *owner;
     uint32_t index;
@@ -63,11 +63,9 @@ struct daran_sim_can {
  * a Cortex-M4, docs/performance.md: a few microseconds). */
 #define DARAN_SIM_CAN_DRIVE_DELAY_NS 10000u
 
-/* The port every front end is given: send queues on the drive's node,
- * now_ms reads the bus's clock, no system hook. */
-extern const daran_can_port_t daran_sim_can_port;
-
-/* Put every drive of @p line on a new bus at DARAN_SIM_CAN_BIT_RATE whose
+/* Put every drive of @p line on a new bus at DARAN_SIM_CAN_BIT_RATE (each
+ * node's port description gets the bus's clock and a transmit that queues
+ * on its node; no system hook) whose
  * clock starts at the line's simulated time: drive i becomes node i and its
  * protocol instance gets its front end (daran_can_init(), which reads
  * can.config.protocol). The line's setup function (daran_sim_bus_set_setup(),

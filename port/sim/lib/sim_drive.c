@@ -46,7 +46,7 @@ static daran_result_t drive_get(const daran_sim_drive_t *d, daran_prop_t prop, d
     }
 }
 
-static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
+daran_result_t daran_sim_get(void *ctx, daran_prop_t prop, daran_value_t *out)
 {
     daran_sim_drive_t *d = ctx;
     daran_result_t r;
@@ -62,7 +62,7 @@ static daran_result_t hal_get(void *ctx, daran_prop_t prop, daran_value_t *out)
     return drive_get(d, prop, out);
 }
 
-static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
+daran_result_t daran_sim_set(void *ctx, daran_prop_t prop, daran_value_t value)
 {
     daran_sim_drive_t *d = ctx;
     daran_result_t r;
@@ -78,7 +78,7 @@ static daran_result_t hal_set(void *ctx, daran_prop_t prop, daran_value_t value)
     return daran_sim_model_set(&d->model, prop, value);
 }
 
-static daran_result_t hal_move(void *ctx, const daran_move_t *move)
+daran_result_t daran_sim_move(void *ctx, const daran_move_t *move)
 {
     daran_sim_drive_t *d = ctx;
     daran_result_t r;
@@ -88,7 +88,7 @@ static daran_result_t hal_move(void *ctx, const daran_move_t *move)
     return daran_sim_model_move(&d->model, move);
 }
 
-static daran_result_t hal_action(void *ctx, daran_action_t action)
+daran_result_t daran_sim_action(void *ctx, daran_action_t action)
 {
     daran_sim_drive_t *d = ctx;
     daran_result_t r;
@@ -128,7 +128,7 @@ static daran_result_t hal_action(void *ctx, daran_action_t action)
     }
 }
 
-const daran_hal_t daran_sim_hal = {hal_get, hal_set, hal_move, hal_action};
+const daran_hal_t daran_sim_hal = {DARAN_SIM_HAL_FUNCTIONS};
 
 void daran_sim_drive_init(daran_sim_drive_t *d, uint32_t index, uint32_t tick_hz)
 {

@@ -70,9 +70,20 @@ typedef struct daran_sim_drive {
     uint32_t failing_saves;        /* `ss` lines still to fail with motor fault */
 } daran_sim_drive_t;
 
-/* The HAL the core calls; its context is a daran_sim_drive_t. Each call
- * first takes an injected refusal of its kind if one is pending, then asks
- * the extension (get, set), then the model. */
+/* The HAL's four functions; their context is a daran_sim_drive_t (or a
+ * struct that begins with one). Each call first takes an injected refusal
+ * of its kind if one is pending, then asks the extension (get, set), then
+ * the model. A program's port description adds its reply writer:
+ * `static const daran_hal_t hal = {DARAN_SIM_HAL_FUNCTIONS, .write = write_reply};`. */
+daran_result_t daran_sim_get(void *ctx, daran_prop_t prop, daran_value_t *out);
+daran_result_t daran_sim_set(void *ctx, daran_prop_t prop, daran_value_t value);
+daran_result_t daran_sim_move(void *ctx, const daran_move_t *move);
+daran_result_t daran_sim_action(void *ctx, daran_action_t action);
+#define DARAN_SIM_HAL_FUNCTIONS \
+    .get = daran_sim_get, .set = daran_sim_set, .move = daran_sim_move, .action = daran_sim_action
+
+/* The four alone, for a HAL that wraps this one (the test kit's recorder,
+ * which writes the replies itself). */
 extern const daran_hal_t daran_sim_hal;
 
 /* Set up drive number @p index (0-based; default id index + 1) with empty RAM

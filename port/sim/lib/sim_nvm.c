@@ -239,7 +239,8 @@ static void probe_write(void *ctx, const char *line, size_t len)
     (void)len;
 }
 
-static const daran_hal_t probe_hal = {probe_get, probe_set, probe_move, probe_action};
+static const daran_hal_t probe_hal = {probe_get, probe_set, probe_move, probe_action,
+                                      probe_write, NULL, NULL, NULL, NULL};
 
 static size_t put_text(char *out, size_t at, const char *text)
 {
@@ -272,7 +273,7 @@ bool daran_sim_nvm_config_in_range(const daran_value_t cfg[DARAN_PROP_COUNT],
     int p;
     probe.prop = DARAN_PROP_COUNT;
     probe.reached_set = false;
-    if (daran_init(&scratch, &probe_hal, &probe, probe_write, NULL) != DARAN_OK) {
+    if (daran_init(&scratch, &probe_hal, &probe) != DARAN_OK) {
         return false;
     }
     for (p = 0; p < (int)DARAN_PROP_COUNT && p < (int)(sizeof probe_rows / sizeof probe_rows[0]);
