@@ -27,7 +27,7 @@ bool acme_can_filter_passes(const acme_can_filter_t *filter, const daran_can_fra
 }
 
 /* A frame waits in a mailbox until the bus took it (acme_drive_run()). */
-static bool send(void *ctx, const daran_can_frame_t *frame)
+bool acme_can_send(void *ctx, const daran_can_frame_t *frame)
 {
     acme_drive_t *drive = ctx;
     (void)frame;
@@ -39,13 +39,11 @@ static bool send(void *ctx, const daran_can_frame_t *frame)
     return true;
 }
 
-static uint32_t now_ms(void *ctx)
+uint32_t acme_can_now_ms(void *ctx)
 {
     const acme_drive_t *drive = ctx;
     return drive->time_ms;
 }
-
-const daran_can_port_t acme_can_port = {send, now_ms, NULL};
 
 void acme_can_deliver(void *ctx, daran_can_t *can, const daran_can_frame_t *frame)
 {

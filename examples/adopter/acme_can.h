@@ -28,9 +28,10 @@ void acme_can_filter_set(acme_can_filter_t *filter, uint32_t node);
 
 bool acme_can_filter_passes(const acme_can_filter_t *filter, const daran_can_frame_t *frame);
 
-/* send (into a free mailbox), now_ms (the drive's clock); the context is
- * the acme_drive_t. */
-extern const daran_can_port_t acme_can_port;
+/* The port description's CAN transmit (into a free mailbox) and clock (the
+ * drive's); the context is the acme_drive_t. */
+bool acme_can_send(void *ctx, const daran_can_frame_t *frame);
+uint32_t acme_can_now_ms(void *ctx);
 
 /* The receive interrupt's body: @p frame through the filter into @p can.
  * @p ctx is the acme_drive_t. */

@@ -1,5 +1,6 @@
 /* The ACME X1's HAL (acme_hal.h). */
 #include "acme_hal.h"
+#include "acme_can.h"
 
 #include <string.h>
 
@@ -272,4 +273,9 @@ static daran_result_t action(void *ctx, daran_action_t which)
     }
 }
 
-const daran_hal_t acme_hal = {.get = get, .set = set, .move = move, .action = action};
+const daran_hal_t acme_hal = {.get = get,
+                              .set = set,
+                              .move = move,
+                              .action = action,
+                              .now_ms = acme_can_now_ms,
+                              .can_send = acme_can_send};

@@ -40,6 +40,9 @@ void acme_drive_power_on(acme_drive_t *drive);
  * the CAN bus takes the frames waiting in the mailboxes. */
 void acme_drive_run(acme_drive_t *drive, uint32_t ms);
 
+/* The X1's port description without a reply writer (the program adds its
+ * UART's: acme_port.c): the HAL, the CAN transmit and clock (acme_can.h);
+ * the context is the acme_drive_t. */
 extern const daran_hal_t acme_hal;
 
 #endif /* ACME_HAL_H */

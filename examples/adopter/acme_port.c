@@ -18,8 +18,11 @@ int main(void)
 {
     static acme_drive_t drive;
     static daran_drive_t protocol;
+    static daran_hal_t port; /* the X1's description with this program's writer */
+    port = acme_hal;
+    port.write = write_reply;
     acme_drive_factory_reset(&drive, 4100000001ull);
-    daran_result_t init = daran_init(&protocol, &acme_hal, &drive, write_reply, NULL);
+    daran_result_t init = daran_init(&protocol, &port, &drive);
     if (init != DARAN_OK) {
         fprintf(stderr, "acme-port: daran_init: %s\n", daran_result_phrase(init));
         return 1;

@@ -28,8 +28,6 @@ const daran_test_port_t *daran_test_port(void)
         .ctx = &drive,
         .reset = factory_reset,
         .advance = run,
-        .can_port = &acme_can_port,
-        .can_ctx = &drive,
         .can_deliver = acme_can_deliver,
     };
     return &port;

@@ -13,6 +13,11 @@
 #include "daran_ascii.h"
 
 extern const daran_hal_t my_hal;
+/* the adopter's HAL functions */
+daran_result_t my_get(void *ctx, daran_prop_t prop, daran_value_t *out);
+daran_result_t my_set(void *ctx, daran_prop_t prop, daran_value_t value);
+daran_result_t my_move(void *ctx, const daran_move_t *move);
+daran_result_t my_action(void *ctx, daran_action_t action);
 void my_uart_write(void *ctx, const char *line, size_t len);
 void uart_write_line(void *ctx, const char *line, size_t len);
 uint32_t my_millis(void);
