@@ -99,6 +99,10 @@ void conf_send_n(const char *line, size_t len);
 void conf_advance(uint32_t ms);
 /* The drive the check bound (for the CAN front end). */
 daran_drive_t *conf_drive(void);
+/* The drive's port description: the recorder's functions and the reply sink
+ * (a CAN check wraps its CAN functions, can_harness.c). The drive reads it
+ * at each call. */
+daran_hal_t *conf_drive_port(void);
 /* Add to the check's transcript (printf-style), and the HAL calls the
  * recorder holds, as conf_send() writes them. */
 void conf_transcript(const char *fmt, ...)
@@ -237,14 +241,10 @@ void conf_check_can(void);
 
 /* ---- can_harness.c: the CAN front end of a check (DARAN_ENABLE_CAN) ---- */
 
-/* Give the drive's port description @p hal the test port's clock, system
- * hook and transmit, the transmit wrapped so every frame the drive sends is
- * seen (nothing without CAN or without the port's can_send and now_ms). */
-void conf_can_watch(daran_hal_t *hal);
 
 #if DARAN_ENABLE_CAN
 /* Begin a CAN check: conf_begin(), then a fresh daran_can_t bound to the
- * drive (its can_send wrapped by conf_can_watch()). False when the check
+ * drive, the port's CAN functions in its description (can_send wrapped). False when the check
  * has failed already (reset, daran_can_init(), can.config.protocol 0). */
 bool conf_can_begin(conf_req_t req, const char *subject);
 /* Within a CAN check: reset and bind both front ends again. */

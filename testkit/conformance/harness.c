@@ -208,13 +208,17 @@ const daran_test_port_t *conf_port(void)
     return h.port;
 }
 
+daran_hal_t *conf_drive_port(void)
+{
+    return &h.hal;
+}
+
 static void bind_drive(void)
 {
     daran_recorder_init(&h.rec, h.port->hal, h.port->ctx);
     h.rec.log_gets = true;
     h.hal = daran_recorder_hal;
     h.hal.write = sink;
-    conf_can_watch(&h.hal);
     daran_result_t result = daran_init(&h.drive, &h.hal, &h.rec);
     if (result != DARAN_OK) {
         /* nothing can be checked: the program and its core disagree */
