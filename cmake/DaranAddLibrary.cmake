@@ -25,7 +25,7 @@ set(DARAN_STRICT_WARNINGS
 # door, CAN (front end, codec, bridge), text and numbers, the property
 # table. A global property, as the functions below run in their callers'
 # directory scopes.
-set_property(GLOBAL PROPERTY DARAN_CORE_ROOMS link ascii request can text table)
+set_property(GLOBAL PROPERTY DARAN_CORE_ROOMS link ascii request can update text table)
 set_property(GLOBAL PROPERTY DARAN_CORE_SOURCES
   link/rx_ring.c link/framer.c link/checksum.c
   ascii/drive.c ascii/command_table.c ascii/commands_common.c ascii/commands_motion.c
@@ -34,6 +34,7 @@ set_property(GLOBAL PROPERTY DARAN_CORE_SOURCES
   ascii/reply.c
   request/request_preset.c request/request_property.c request/request_state.c request/hal.c
   request/hal_can.c
+  update/update.c update/hash.c
   can/can.c can/can_address.c can/can_bridge.c can/can_codec.c can/can_encode.c can/can_ring.c
   text/number.c text/text.c text/result.c
   table/property_table.c

@@ -76,6 +76,7 @@
      (uint32_t)DARAN_ENABLE_DISCOVERY << 7 ^ (uint32_t)DARAN_ENABLE_TELEMETRY << 16 ^            \
      (uint32_t)DARAN_ENABLE_PORT_COMMANDS << 17 ^ (uint32_t)DARAN_ENABLE_S_CURVE << 18 ^          \
      (uint32_t)DARAN_ENABLE_CAN << 19 ^ (uint32_t)DARAN_ENABLE_CAN_BRIDGE << 20 ^                 \
+     (uint32_t)DARAN_ENABLE_UPDATE << 21 ^                                                      \
      (uint32_t)DARAN_CAN_RX_FRAMES * 0x27D4EB2Fu ^ (uint32_t)DARAN_CAN_BRIDGE_TIMEOUT_MS * 0x165667B1u)
 
 /** @cond INTERNAL */

@@ -82,7 +82,8 @@ typedef enum daran_client_class {
     DARAN_CLIENT_CLASS_PRESET, /**< `ms`: replaces the preset */
     DARAN_CLIENT_CLASS_WRITE,  /**< `w` */
     DARAN_CLIENT_CLASS_SYSTEM, /**< `ss se sr sc sz st u` */
-    DARAN_CLIENT_CLASS_QUERY   /**< `r f g i e h`: no effect, safe to repeat */
+    DARAN_CLIENT_CLASS_QUERY,  /**< `r f g i e h`: no effect, safe to repeat */
+    DARAN_CLIENT_CLASS_UPDATE  /**< `ub uw uv ug uy ua uq`: a step of a firmware update */
 } daran_client_class_t;
 
 /** The command's word ("t", "ms", "h"); NULL outside the enum. O(1). */

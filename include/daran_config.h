@@ -113,6 +113,13 @@
 #define DARAN_ENABLE_CAN_BRIDGE DARAN_ENABLE_CAN
 #endif
 
+/** 1 (default): the firmware update commands `ub uw uv ug uy ua us`
+ * (daran_update.h, docs/update.md), answered by a drive bound to a
+ * daran_update_t. 0 compiles them out: the build pays nothing for them. */
+#ifndef DARAN_ENABLE_UPDATE
+#define DARAN_ENABLE_UPDATE 1
+#endif
+
 /** How long the bridge waits for each reply of a bridged query, in ms (C32). */
 #ifndef DARAN_CAN_BRIDGE_TIMEOUT_MS
 #define DARAN_CAN_BRIDGE_TIMEOUT_MS 10
@@ -175,6 +182,9 @@
 #endif
 #if DARAN_ENABLE_CAN_BRIDGE && !DARAN_ENABLE_CAN
 #error "DARAN_ENABLE_CAN_BRIDGE needs DARAN_ENABLE_CAN"
+#endif
+#if DARAN_ENABLE_UPDATE != 0 && DARAN_ENABLE_UPDATE != 1
+#error "DARAN_ENABLE_UPDATE must be 0 or 1"
 #endif
 #if DARAN_CAN_BRIDGE_TIMEOUT_MS < 1 || DARAN_CAN_BRIDGE_TIMEOUT_MS > 60000
 #error "DARAN_CAN_BRIDGE_TIMEOUT_MS must be within 1..60000"

@@ -75,6 +75,7 @@ typedef struct daran_fields {
 struct daran_port_command;
 struct daran_request;
 struct daran_line_sink;
+struct daran_update;
 /* What takes a drive's lines for other ids instead of the forward hook (a
  * gateway's bridge, daran_can.h): the sink registers its functions, and the
  * drive knows nothing else of it. */
@@ -100,6 +101,9 @@ typedef struct daran_drive {
     void *ctx;               /* the one context every HAL function gets */
     const struct daran_port_command *port_commands;
     daran_line_sink_t *sink;  /* takes lines for other ids (a gateway's bridge), NULL without one */
+#if DARAN_ENABLE_UPDATE
+    struct daran_update *update; /* the update module bound to it (daran_update.h), or NULL */
+#endif
     uint32_t telemetry_next; /* tick of the next report */
     daran_rx_ring_t rx;
     uint16_t line_len;       /* bytes of the current line so far (saturates past DARAN_LINE_MAX) */

@@ -136,7 +136,8 @@ typedef enum daran_action {
                                      expiry (idle damping where the port has it) */
 } daran_action_t;
 
-struct daran_can_frame; /* daran_can.h */
+struct daran_can_frame;    /* daran_can.h */
+struct daran_update_port;  /* daran_update.h */
 
 /** Receives one whole reply line (line end included; never NUL-terminated).
  * Called from daran_poll() / daran_process_line(). */
@@ -180,6 +181,9 @@ typedef struct daran_hal {
      * not carry out itself, 0x00 (restore initial configuration) and 0x07
      * (firmware-update mode), with their two 16-bit data fields (C19). */
     void (*can_system)(void *ctx, uint32_t subcode, uint16_t data1, uint16_t data2);
+    /** Optional (NULL: no firmware update): the flash and boot control the
+     * update module (daran_update.h) works with. */
+    const struct daran_update_port *update;
 } daran_hal_t;
 
 #ifdef __cplusplus

@@ -16,11 +16,12 @@
  *   FEATURE  when a drive has the command: ALWAYS, MULTI
  *            (DARAN_ENABLE_MULTI_MOTOR), HELP (`h`: DARAN_ENABLE_HELP or
  *            DARAN_ENABLE_DISCOVERY), DISCOVERY (a form of `h` that only a
- *            build with discovery answers: the drive reads it as part of `h`).
+ *            build with discovery answers: the drive reads it as part of `h`),
+ *            UPDATE (DARAN_ENABLE_UPDATE: the firmware update, daran_update.h).
  *   CLASS    what it does: MOTION (moves now), PRESET (stores a preset),
  *            START (starts the preset: moves), QUERY (answers values, no
  *            effect), READ (`r`: a property's value), WRITE (`w`), SYSTEM (a
- *            HAL action).
+ *            HAL action), UPDATE (a step of a firmware update: ARG names it).
  *   REPLY    how a drive answers it when it succeeds: SILENT, ONE_LINE,
  *            ERROR_LINES (`e`'s seven lines), UNTIL_END (lines, then `end`),
  *            UNTIL_QUIET (lines, no end marker). A command that fails is
@@ -46,7 +47,9 @@
  *            ones) or NONE: ID (a motor id), F32 (a number), MODE (an
  *            integer mode), FLAG (0 or 1), PATH (a property path; `axisN.`
  *            paths carry the id), VALUE (a value in the property's type),
- *            WORD (a literal word, `properties`).
+ *            WORD (a literal word, `properties`), U32 (an unsigned 32-bit
+ *            integer, exact), DATA (bytes in the characters
+ *            DARAN_UPDATE_DATA_FIRST..LAST: 5 characters for 4 bytes).
  *
  * The table is the protocol's, whatever a build of the drive leaves out; a
  * drive built with an options header may add rows of its own with
@@ -118,8 +121,28 @@
     X(E,  'e', 0,   ALWAYS, QUERY,  ERROR_LINES, RETRY, errors, E, READ_LIST, "",                  \
       REQ_ID, NONE, NONE, NONE, NONE, NONE)                                                        \
     X(U,  'u', 0,   ALWAYS, SYSTEM, SILENT, ONCE,  action, FEED_WATCHDOG, ACTION, "",              \
+      REQ_ID, NONE, NONE, NONE, NONE, NONE)                                                        \
+    X(UB, 'u', 'b', UPDATE, UPDATE, ONE_LINE, RETRY, update, BEGIN, NONE,                          \
+      "size crc32 version hardware", REQ_ID, REQ_U32, REQ_U32, REQ_U32, REQ_U32, NONE)             \
+    X(UW, 'u', 'w', UPDATE, UPDATE, ONE_LINE, RETRY, update, WRITE, NONE, "offset crc32 data",     \
+      REQ_ID, REQ_U32, REQ_U32, REQ_DATA, NONE, NONE)                                              \
+    X(UV, 'u', 'v', UPDATE, UPDATE, SILENT, RETRY, update, VERIFY, NONE, "",                       \
+      REQ_ID, NONE, NONE, NONE, NONE, NONE)                                                        \
+    X(UG, 'u', 'g', UPDATE, UPDATE, SILENT, ONCE, update, COMMIT, NONE, "",                        \
+      REQ_ID, NONE, NONE, NONE, NONE, NONE)                                                        \
+    X(UY, 'u', 'y', UPDATE, UPDATE, SILENT, RETRY, update, CONFIRM, NONE, "",                      \
+      REQ_ID, NONE, NONE, NONE, NONE, NONE)                                                        \
+    X(UA, 'u', 'a', UPDATE, UPDATE, SILENT, RETRY, update, ABORT, NONE, "",                        \
+      REQ_ID, NONE, NONE, NONE, NONE, NONE)                                                        \
+    X(UQ, 'u', 'q', UPDATE, UPDATE, ONE_LINE, RETRY, update, STATUS, NONE, "",                     \
       REQ_ID, NONE, NONE, NONE, NONE, NONE)
 /* clang-format on */
+
+/** The alphabet of a DATA field (`uw`): the 85 characters '!'..'~' without
+ * '*' (the checksum's mark) from '!' on; 5 characters carry 4 bytes, most
+ * significant first, and a last group of n < 5 characters n - 1 bytes. */
+#define DARAN_UPDATE_DATA_FIRST '!'
+#define DARAN_UPDATE_DATA_LAST 'v'
 
 #ifndef DARAN_EXTRA_COMMANDS
 /** A build's own requests, from its options header (none by default). */
@@ -156,6 +179,8 @@
 #define DARAN_PF_MIN_REQ_PATH 1
 #define DARAN_PF_MIN_REQ_VALUE 1
 #define DARAN_PF_MIN_REQ_WORD 1
+#define DARAN_PF_MIN_REQ_U32 1
+#define DARAN_PF_MIN_REQ_DATA 1
 #define DARAN_PF_MIN_OPT_ID 0
 #define DARAN_PF_MIN_OPT_F32 0
 #define DARAN_PF_MIN_OPT_MODE 0
@@ -168,6 +193,8 @@
 #define DARAN_PF_MAX_REQ_PATH 1
 #define DARAN_PF_MAX_REQ_VALUE 1
 #define DARAN_PF_MAX_REQ_WORD 1
+#define DARAN_PF_MAX_REQ_U32 1
+#define DARAN_PF_MAX_REQ_DATA 1
 #define DARAN_PF_MAX_OPT_ID 1
 #define DARAN_PF_MAX_OPT_F32 1
 #define DARAN_PF_MAX_OPT_MODE 1
@@ -180,6 +207,8 @@
 #define DARAN_PF_VALUES_REQ_PATH 0
 #define DARAN_PF_VALUES_REQ_VALUE 0
 #define DARAN_PF_VALUES_REQ_WORD 0
+#define DARAN_PF_VALUES_REQ_U32 0
+#define DARAN_PF_VALUES_REQ_DATA 0
 #define DARAN_PF_VALUES_OPT_ID 0
 #define DARAN_PF_VALUES_OPT_F32 1
 #define DARAN_PF_VALUES_OPT_MODE 1

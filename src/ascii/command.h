@@ -77,6 +77,17 @@ typedef struct daran_command {
     uint8_t arg; /* handler-specific: the shape of a motion command, the HAL action of a system one */
 } daran_command_t;
 
+/* The step an UPDATE row names (daran_protocol.h's ARG column). */
+typedef enum daran_update_op {
+    DARAN_UPDATE_OP_BEGIN,
+    DARAN_UPDATE_OP_WRITE,
+    DARAN_UPDATE_OP_VERIFY,
+    DARAN_UPDATE_OP_COMMIT,
+    DARAN_UPDATE_OP_CONFIRM,
+    DARAN_UPDATE_OP_ABORT,
+    DARAN_UPDATE_OP_STATUS
+} daran_update_op_t;
+
 /* A query row's properties and their count. */
 static inline const daran_prop_t *daran_query_of(const daran_command_t *command, uint8_t *count)
 {

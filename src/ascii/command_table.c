@@ -24,6 +24,11 @@
 #define ON_DRIVE_HELP(...)
 #endif
 #define ON_DRIVE_DISCOVERY(...)
+#if DARAN_ENABLE_UPDATE
+#define ON_DRIVE_UPDATE(...) __VA_ARGS__
+#else
+#define ON_DRIVE_UPDATE(...)
+#endif
 
 /* The most fields of `h id properties [prefix]`, word included. */
 #define DISCOVERY_MAX_OF(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, \
@@ -33,6 +38,7 @@
 #define DISCOVERY_MAX_MULTI(n)
 #define DISCOVERY_MAX_HELP(n)
 #define DISCOVERY_MAX_DISCOVERY(n) +1 + (n)
+#define DISCOVERY_MAX_UPDATE(n)
 enum { DISCOVERY_FIELDS = 0 DARAN_PROTOCOL_COMMANDS(DISCOVERY_MAX_OF) };
 #undef DISCOVERY_MAX_OF
 
@@ -46,6 +52,7 @@ enum { DISCOVERY_FIELDS = 0 DARAN_PROTOCOL_COMMANDS(DISCOVERY_MAX_OF) };
 #define DRIVE_IS_HELP_MULTI 0
 #define DRIVE_IS_HELP_HELP 1
 #define DRIVE_IS_HELP_DISCOVERY 0
+#define DRIVE_IS_HELP_UPDATE 0
 
 /* The handler's argument of a row: its shape, its action or its query. */
 #define ARG_MOTION(arg) DARAN_SHAPE_##arg
@@ -55,6 +62,7 @@ enum { DISCOVERY_FIELDS = 0 DARAN_PROTOCOL_COMMANDS(DISCOVERY_MAX_OF) };
 #define ARG_PRESET(arg) 0
 #define ARG_READ(arg) 0
 #define ARG_WRITE(arg) 0
+#define ARG_UPDATE(arg) DARAN_UPDATE_OP_##arg
 
 /* The flags of a row: answered for id 0 (a query or a read), the id in a
  * path, and its CAN form for the bridge. */
@@ -65,6 +73,7 @@ enum { DISCOVERY_FIELDS = 0 DARAN_PROTOCOL_COMMANDS(DISCOVERY_MAX_OF) };
 #define READS_WRITE 0u
 #define READS_QUERY DARAN_CMD_READ
 #define READS_READ DARAN_CMD_READ
+#define READS_UPDATE 0u
 #define FLAGS_OF(cls, can, f1)                                                                \
     (uint8_t)(READS_##cls | (DARAN_PROTOCOL_PATH_FIRST(f1) ? DARAN_CMD_PATH : 0u) |          \
               (unsigned)DARAN_CAN_FORM_##can << DARAN_CMD_CAN_SHIFT)
@@ -100,6 +109,7 @@ DARAN_STATIC_ASSERT((0 DRIVE_COMMANDS(FIELDS_WRONG)) == 0, command_field_counts_
 #define MOTION_VALUES_WRONG_READ(n)
 #define MOTION_VALUES_WRONG_WRITE(n)
 #define MOTION_VALUES_WRONG_SYSTEM(n)
+#define MOTION_VALUES_WRONG_UPDATE(n)
 #define MOTION_VALUES_WRONG(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, \
                             f2, f3, f4, f5, f6)                                                    \
     MOTION_VALUES_WRONG_##cls(DARAN_PROTOCOL_MAX_VALUES(f1, f2, f3, f4, f5, f6))
@@ -141,6 +151,7 @@ static const uint8_t row_of_slot[64] = {DRIVE_COMMANDS(SLOT_OF)};
     ON_DRIVE_##feature(HELP_TEXT_##feature(help) "\0")
 #define HELP_TEXT_ALWAYS(help) help
 #define HELP_TEXT_MULTI(help) help
+#define HELP_TEXT_UPDATE(help) help
 #if DARAN_ENABLE_DISCOVERY
 #define HELP_TEXT_HELP(help) "[" DARAN_H_PROPERTIES_HELP "]"
 #else

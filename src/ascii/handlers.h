@@ -58,6 +58,8 @@ daran_result_t daran_cmd_start(daran_drive_t *drive, const daran_request_t *requ
 daran_result_t daran_cmd_r(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_w(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_action(daran_drive_t *drive, const daran_request_t *request);
+/* update.c (the update module's room): every `u?` step but `u` */
+daran_result_t daran_cmd_update(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_help(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_query(daran_drive_t *drive, const daran_request_t *request);
 daran_result_t daran_cmd_errors(daran_drive_t *drive, const daran_request_t *request);

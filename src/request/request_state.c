@@ -2,8 +2,15 @@
  * drive takes motion, and a HAL action with what the core forgets with it. */
 #include "request.h"
 
+#include "daran_update.h"
+
 daran_result_t daran_check_motion_allowed(daran_drive_t *drive)
 {
+#if DARAN_ENABLE_UPDATE
+    if (drive->update != NULL && drive->update->state != DARAN_UPDATE_IDLE) {
+        return DARAN_ERR_UPDATE_OPEN;
+    }
+#endif
     daran_value_t value;
     daran_result_t result = daran_get(drive, DARAN_PROP_AXIS_ERROR, &value);
     if (result != DARAN_OK) {

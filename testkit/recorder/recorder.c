@@ -292,7 +292,8 @@ static void recorder_can_system(void *ctx, uint32_t subcode, uint16_t data1, uin
 
 const daran_hal_t daran_recorder_hal = {recorder_get,      recorder_set,       recorder_move,
                                         recorder_action,   daran_recorder_write, NULL,
-                                        recorder_now_ms,   recorder_can_send,  recorder_can_system};
+                                        recorder_now_ms,   recorder_can_send,  recorder_can_system,
+                                        NULL};
 
 /* ---- the inner port's own commands ---- */
 

@@ -370,6 +370,7 @@ typedef struct protocol_row {
 #define MOVES_READ 0
 #define MOVES_WRITE 0
 #define MOVES_SYSTEM 0
+#define MOVES_UPDATE 0
 #define RETRIES_RETRY 1
 #define RETRIES_ONCE 0
 #define PROTOCOL_ROW(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, f3, \

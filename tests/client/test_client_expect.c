@@ -50,6 +50,13 @@ static const expectation_t expected[] = {
     {DARAN_CLIENT_CMD_E, "e", DARAN_CLIENT_REPLY_ERROR_LINES, DARAN_CLIENT_CLASS_QUERY},
     {DARAN_CLIENT_CMD_H, "h", DARAN_CLIENT_REPLY_UNTIL_QUIET, DARAN_CLIENT_CLASS_QUERY},
     {DARAN_CLIENT_CMD_H_PROPERTIES, "h", DARAN_CLIENT_REPLY_UNTIL_END, DARAN_CLIENT_CLASS_QUERY},
+    {DARAN_CLIENT_CMD_UB, "ub", DARAN_CLIENT_REPLY_ONE_LINE, DARAN_CLIENT_CLASS_UPDATE},
+    {DARAN_CLIENT_CMD_UW, "uw", DARAN_CLIENT_REPLY_ONE_LINE, DARAN_CLIENT_CLASS_UPDATE},
+    {DARAN_CLIENT_CMD_UV, "uv", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_UPDATE},
+    {DARAN_CLIENT_CMD_UG, "ug", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_UPDATE},
+    {DARAN_CLIENT_CMD_UY, "uy", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_UPDATE},
+    {DARAN_CLIENT_CMD_UA, "ua", DARAN_CLIENT_REPLY_SILENT, DARAN_CLIENT_CLASS_UPDATE},
+    {DARAN_CLIENT_CMD_UQ, "uq", DARAN_CLIENT_REPLY_ONE_LINE, DARAN_CLIENT_CLASS_UPDATE},
 };
 
 static void test_every_command_has_its_reply_shape_and_class(void)
@@ -63,16 +70,19 @@ static void test_every_command_has_its_reply_shape_and_class(void)
     }
 }
 
-static void test_only_queries_may_be_retried(void)
+static void test_only_queries_and_repeatable_update_steps_may_be_retried(void)
 {
     size_t retried = 0;
     for (size_t i = 0; i < sizeof expected / sizeof expected[0]; i++) {
-        bool query = expected[i].cls == DARAN_CLIENT_CLASS_QUERY;
-        TEST_ASSERT_EQUAL_INT_MESSAGE(query, daran_client_may_retry(expected[i].command),
+        /* an update step is idempotent (a chunk by its offset) but the commit */
+        bool again = expected[i].cls == DARAN_CLIENT_CLASS_QUERY ||
+                     (expected[i].cls == DARAN_CLIENT_CLASS_UPDATE &&
+                      strcmp(expected[i].word, "ug") != 0);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(again, daran_client_may_retry(expected[i].command),
                                       expected[i].word);
-        retried += query ? 1u : 0u;
+        retried += again ? 1u : 0u;
     }
-    TEST_ASSERT_EQUAL_UINT64(7, retried); /* r f g i e h, h properties */
+    TEST_ASSERT_EQUAL_UINT64(13, retried); /* r f g i e h, h properties; ub uw uv uy ua uq */
     TEST_ASSERT_FALSE(daran_client_may_retry(DARAN_CLIENT_CMD_MQ));
     TEST_ASSERT_FALSE(daran_client_may_retry(DARAN_CLIENT_CMD_SZ));
 }
@@ -127,7 +137,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_every_command_has_its_reply_shape_and_class);
-    RUN_TEST(test_only_queries_may_be_retried);
+    RUN_TEST(test_only_queries_and_repeatable_update_steps_may_be_retried);
     RUN_TEST(test_a_value_outside_the_enum_gets_the_safe_answers);
     RUN_TEST(test_a_raw_lines_shape_comes_from_its_word);
     return UNITY_END();

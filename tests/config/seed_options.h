@@ -35,6 +35,7 @@
 #define DARAN_ENABLE_PORT_COMMANDS 0
 #define DARAN_ENABLE_S_CURVE 0
 #define DARAN_ENABLE_CAN 0
+#define DARAN_ENABLE_UPDATE 0
 
 /* Every vendor row the seed's protocol does not name (108 of 165). */
 #define DARAN_OMIT_PROPERTIES(X) \

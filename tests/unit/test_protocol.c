@@ -36,10 +36,12 @@ typedef struct row {
 #define IN_BUILD_MULTI DARAN_ENABLE_MULTI_MOTOR
 #define IN_BUILD_HELP DARAN_ENABLE_HELP
 #define IN_BUILD_DISCOVERY 0
+#define IN_BUILD_UPDATE DARAN_ENABLE_UPDATE
 #define VARIANT_ALWAYS 0
 #define VARIANT_MULTI 0
 #define VARIANT_HELP 0
 #define VARIANT_DISCOVERY 1
+#define VARIANT_UPDATE 0
 #define READS_MOTION 0
 #define READS_START 0
 #define READS_PRESET 0
@@ -47,6 +49,7 @@ typedef struct row {
 #define READS_WRITE 0
 #define READS_QUERY 1
 #define READS_READ 1
+#define READS_UPDATE 0
 #define ROW(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, f1, f2, f3, f4, f5, \
             f6)                                                                                \
     {#name,                                                                                    \

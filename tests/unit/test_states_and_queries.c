@@ -534,7 +534,11 @@ static void test_e_reads_a_register_the_port_left_out_as_0(void)
 
 static const char *const help_words[] = {"t",  "q",  "p",  "v",  "c",  "d",  "ms", "mt", "mq",
                                          "mp", "mv", "mc", "r",  "w",  "ss", "se", "sr", "sc",
-                                         "sz", "st", "h",  "f",  "g",  "i",  "e",  "u"};
+                                         "sz", "st", "h",  "f",  "g",  "i",  "e",  "u",
+#if DARAN_ENABLE_UPDATE
+                                         "ub", "uw", "uv", "ug", "uy", "ua", "uq"
+#endif
+};
 #define N_HELP (sizeof help_words / sizeof help_words[0])
 
 static void check_help(mock_t *m, bool checksum)

@@ -240,7 +240,7 @@ static void probe_write(void *ctx, const char *line, size_t len)
 }
 
 static const daran_hal_t probe_hal = {probe_get, probe_set, probe_move, probe_action,
-                                      probe_write, NULL, NULL, NULL, NULL};
+                                      probe_write, NULL, NULL, NULL, NULL, NULL};
 
 static size_t put_text(char *out, size_t at, const char *text)
 {
