@@ -1,0 +1,192 @@
+"""A drive on a link: a method for every command, its properties as an
+attribute tree, its state and its errors."""
+from typing import NamedTuple
+
+from ._client import lib
+from ._link import lookup
+from ._table import ERROR_REGISTERS, PROPERTIES, Property, error_bit_name
+from .props import PropertyTree
+
+
+class State(NamedTuple):
+    """What `state()` reads: position (deg), velocity (r/min), torque setpoint
+    (Nm), whether the trajectory is done, and `axis0.error` (0: none)."""
+    position: float
+    velocity: float
+    torque: float
+    done: bool
+    error: int
+
+
+class Errors(NamedTuple):
+    """`e`'s seven registers (axis, motor, encoder, controller,
+    fet_thermistor, motor_thermistor, can) and the vendor's names of the bits set."""
+    registers: dict
+    names: dict
+
+    def __bool__(self):
+        return any(self.registers.values())
+
+
+#: start kind -> (its start command, whether it takes the relative flag)
+STARTS = {"filtered": ("MT", True), "trapezoid": ("MQ", True), "passthrough": ("MP", True),
+          "velocity": ("MV", False), "torque": ("MC", False)}
+
+_F = [lib.DARAN_CLIENT_TYPE_F32] * 2
+_STATE_READS = ("output_shaft.torque_setpoint", "controller.trajectory_done", "error")
+
+
+class Drive:
+    """Drive `id` on a link (0: every drive, for commands)."""
+
+    def __init__(self, link, drive_id):
+        if not 0 <= drive_id <= lib.DARAN_CLIENT_ID_MAX:
+            raise ValueError(f"drive id {drive_id}: 0..{lib.DARAN_CLIENT_ID_MAX}")
+        self.link = link
+        self.id = drive_id
+        self._table = PROPERTIES
+        self.props = PropertyTree(self, self._table)
+
+    def __repr__(self):
+        return f"<daran.Drive {self.id}>"
+
+    # -- motion (silent commands: a refusal raises DriveRefused; never retried) -------------
+
+    def _send(self, command, *values, wait=None):
+        self.link.transact(command, self.id, values, timeout=wait)
+
+    def move_to(self, position, velocity=None, bandwidth=None, *, wait=None):
+        """`t`: follow `position` (deg) through the input filter; velocity is
+        ignored by drives, bandwidth 1/s."""
+        self._send("T", *_given(position, velocity, bandwidth), wait=wait)
+
+    def trapezoid(self, position, velocity=None, acceleration=None, *, wait=None):
+        """`q`: a trapezoid to `position` (deg) at `velocity` r/min, `acceleration` (r/min)/s."""
+        self._send("Q", *_given(position, velocity, acceleration), wait=wait)
+
+    def position(self, position, velocity_ff=None, torque_ff=None, *, wait=None):
+        """`p`: position with velocity and torque feed-forward."""
+        self._send("P", *_given(position, velocity_ff, torque_ff), wait=wait)
+
+    def velocity(self, velocity, param=None, mode=None, *, wait=None):
+        """`v`: velocity (r/min); mode 1 param = torque feed-forward, mode 2 param = ramp rate."""
+        self._send("V", *_given(velocity, param, mode), wait=wait)
+
+    def torque(self, torque, param=None, mode=None, *, wait=None):
+        """`c`: torque (Nm); mode 1 at once, mode 6 (or 2) ramped at param Nm/s."""
+        self._send("C", *_given(torque, param, mode), wait=wait)
+
+    def impedance(self, position, velocity, torque_ff, kp, kd, *, wait=None):
+        """`d`: impedance control around position (deg) and velocity (r/min)."""
+        self._send("D", position, velocity, torque_ff, kp, kd, wait=wait)
+
+    def preset(self, p1, p2, p3, *, wait=None):
+        """`ms`: store a preset for a later start (link.start or link.move_together)."""
+        self._send("MS", p1, p2, p3, wait=wait)
+
+    def start(self, kind, relative=False, *, wait=None):
+        """Start this drive's preset as `kind` (see STARTS)."""
+        command, takes_flag = STARTS[kind]
+        self._send(command, *((1 if relative else 0,) if takes_flag else ()), wait=wait)
+
+    # -- system ---------------------------------------------------------------------------
+
+    def estop(self, *, wait=None):
+        self._send("ST", wait=wait)
+
+    def clear_errors(self, *, wait=None):
+        self._send("SC", wait=wait)
+
+    def save(self, *, wait=None):
+        self._send("SS", wait=wait)
+
+    def erase_config(self, *, wait=None):
+        self._send("SE", wait=wait)
+
+    def reboot(self, *, wait=None):
+        self._send("SR", wait=wait)
+
+    def set_zero(self, *, wait=None):
+        self._send("SZ", wait=wait)
+
+    def feed_watchdog(self, *, wait=None):
+        self._send("U", wait=wait)
+
+    # -- queries --------------------------------------------------------------------------
+
+    def _query(self, command, expected, types=None):
+        self.link.transact(command, self.id)
+        return self.link.values(expected, types)
+
+    def position_velocity(self):
+        """`f`: (position deg, velocity r/min)."""
+        return tuple(self._query("F", 2, _F))
+
+    def voltage_current(self):
+        """`g`: (bus voltage V, current A)."""
+        return tuple(self._query("G", 2, _F))
+
+    def info(self):
+        """`i`: (firmware version, hardware version, serial number)."""
+        return tuple(self._query("I", 3))
+
+    def state(self):
+        """Position, velocity, torque setpoint, trajectory done and axis error."""
+        position, velocity = self._query("F", 2, _F)
+        torque, done, error = (self.get(path) for path in _STATE_READS)
+        return State(position, velocity, torque, done, error)
+
+    def errors(self):
+        """`e`: the seven registers and the vendor's names of their bits that are set."""
+        values = self.link.parse_errors(self.link.transact("E", self.id, collect=True))
+        registers, names = {}, {}
+        for index, (register, value) in enumerate(zip(ERROR_REGISTERS, values)):
+            registers[register] = value
+            names[register] = [error_bit_name(index, bit) for bit in range(32) if value >> bit & 1]
+        return Errors(registers, names)
+
+    # -- properties -----------------------------------------------------------------------
+
+    def property(self, path):
+        """The Property of `path` (with or without `axisN.`), from the drive's table."""
+        prop = lookup(path, self._table)
+        if prop is None:
+            raise KeyError(path)
+        return prop
+
+    def get(self, path):
+        """Read a property (`r`) as its type."""
+        prop = lookup(path, self._table)
+        self.link.transact("R", self.id, path=path, system=prop.system if prop else None)
+        return self.link.values(1, (prop.ctype,) if prop else None)[0]
+
+    def set(self, path, value, *, wait=None):
+        """Write a property (`w`), its value sent as the property's type."""
+        prop = lookup(path, self._table)
+        self.link.transact("W", self.id, path=path, system=prop.system if prop else None,
+                           value=value, ctype=prop.ctype if prop else None, timeout=wait)
+
+    def discover(self, prefix=None):
+        """Read the drive's own property table (`h id properties`) and use it from now on
+        for types and the props tree; returns it. Drives without discovery refuse it."""
+        lines = self.link.transact("H_PROPERTIES", self.id, path=prefix, collect=True)
+        table = {}
+        for line in lines:
+            prop = self.link.parse_property(line)
+            table[prop.path] = prop
+        self._table = table
+        self.props = PropertyTree(self, table)
+        return table
+
+
+def _given(*values):
+    """The values up to the last one given: optional fields are left off the line."""
+    values = list(values)
+    while values and values[-1] is None:
+        values.pop()
+    if None in values:
+        raise ValueError("an optional value may be left out only after the ones given")
+    return values
+
+
+__all__ = ["Drive", "State", "Errors", "Property", "STARTS"]
