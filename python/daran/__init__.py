@@ -35,8 +35,8 @@ def open_can(bus, **options):
 
 def sim(drives=3, can=False, args=(), **options):
     """Start daran-sim with `drives` drives and return an open link to them
-    (daran.sim.sim's documentation)."""
-    from .sim import sim as start
+    (daran._sim.sim)."""
+    from ._sim import sim as start
     return start(drives, can, args, **options)
 
 

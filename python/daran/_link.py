@@ -10,7 +10,7 @@ from typing import NamedTuple
 
 from ._client import ffi, lib
 from ._table import COMMANDS, PROPERTIES, Property, Result
-from .errors import LinkError, raise_for
+from .errors import DriveRefused, LinkError, NoReply, raise_for
 
 SCOPE = {None: lib.DARAN_CLIENT_SCOPE_AUTO, False: lib.DARAN_CLIENT_SCOPE_AXIS,
          True: lib.DARAN_CLIENT_SCOPE_SYSTEM}
@@ -133,6 +133,12 @@ class LineLink:
         #: lines that answered no request (a late `error:` of an unconfirmed command)
         self.strays = collections.deque(maxlen=256)
         self.closed = False
+        self._checksum = checksum
+        self._retries = retries
+        self._build_buf = ffi.new("char[]", lib.DARAN_CLIENT_LINE_MAX)
+        self._build_len = ffi.new("size_t *")
+        self._reply = ffi.new("daran_client_line_t *")
+        self._report = ffi.new("daran_client_report_t *")
 
     # -- requests ---------------------------------------------------------------------------
 
@@ -200,6 +206,86 @@ class LineLink:
         if types is None:
             return [number_value(self._numbers + i) for i in range(self._count[0])]
         return [number_value(self._numbers + i, t) for i, t in zip(range(self._count[0]), types)]
+
+    def query_batch(self, queries, timeout=None):
+        """Several one-line queries (`r f g i`) sent in one write, their replies read
+        in order: one round trip instead of one each. `queries` holds (command, id,
+        path, system, expected, types); returns one list of values per query. The
+        lines are built, read and parsed by the C client (daran_client_build,
+        daran_client_read_line, daran_client_parse_values); the batch is sent again,
+        as the C link sends a query again, after a timeout or a damaged reply."""
+        if self.closed:
+            raise LinkError(Result.ERR_BUS_ERROR, "the link is closed")
+        out = bytearray()
+        request = self._request
+        keep = []
+        for command, drive_id, path, system, _, _ in queries:
+            request.command = COMMANDS[command]
+            if lib.daran_client_reply_shape(request.command) != lib.DARAN_CLIENT_REPLY_ONE_LINE:
+                raise ValueError(f"{command}: only one-line queries are batched")
+            request.id = drive_id
+            request.value_count = 0
+            keep.append(ffi.new("char[]", path.encode()) if path is not None else ffi.NULL)
+            lib.daran_py_request_path(request, keep[-1], SCOPE[system])
+            result = lib.daran_client_build(request, self._checksum, self._build_buf,
+                                            lib.DARAN_CLIENT_LINE_MAX, self._build_len)
+            if result != Result.OK:
+                raise LinkError(result, _describe(command, drive_id, path))
+            out += ffi.buffer(self._build_buf, self._build_len[0])
+        timeout = self.timeout if timeout is None else timeout
+        with self._lock:
+            for attempt in range(self._retries + 1):
+                lib.daran_client_link_service(self._c_link)  # what came before is no reply
+                try:
+                    return self._batch_once(bytes(out), queries, timeout)
+                except (NoReply, LinkError) as exc:
+                    if attempt == self._retries or isinstance(exc, DriveRefused):
+                        raise
+                    time.sleep(self._c_link.config.quiet_ms / 1000.0)
+                    lib.daran_client_link_service(self._c_link)
+
+    def _batch_once(self, data, queries, timeout):
+        if not self._transport.write(data):
+            raise LinkError(Result.ERR_BUS_ERROR, "the port could not write")
+        answers = []
+        refused = None
+        pending = b""
+        deadline = time.monotonic() + timeout
+        while len(answers) < len(queries):
+            left = deadline - time.monotonic()
+            chunk = self._transport.read(4096, max(0, int(left * 1000))) if left > 0 else b""
+            if not chunk:
+                command, drive_id, path = queries[len(answers)][:3]
+                raise NoReply(Result.ERR_NO_REPLY, _describe(command, drive_id, path))
+            pending += chunk
+            while b"\n" in pending and len(answers) < len(queries):
+                text, _, pending = pending.partition(b"\n")
+                result = lib.daran_client_read_line(text, len(text), self._checksum, self._reply)
+                if result != Result.OK:
+                    raise LinkError(result, f"reply {text!r}")
+                if self._reply.kind == lib.DARAN_CLIENT_LINE_TELEMETRY:
+                    if lib.daran_client_parse_report(self._reply, self._report) == Result.OK:
+                        daran_py_on_report(self._handle, self._report)
+                    continue
+                command, drive_id, path, _, expected, types = queries[len(answers)]
+                if self._reply.kind == lib.DARAN_CLIENT_LINE_ERROR:
+                    refused = refused or DriveRefused(self._reply.error,
+                                                      _describe(command, drive_id, path))
+                    answers.append(None)
+                    continue
+                result = lib.daran_client_parse_values(self._reply, self._numbers,
+                                                       lib.DARAN_CLIENT_REPORT_MAX, expected,
+                                                       self._count)
+                if result != Result.OK:
+                    raise LinkError(result, f"reply {text!r}")
+                count = self._count[0]
+                answers.append([number_value(self._numbers + i, types[i] if types else None)
+                                for i in range(count)])
+        if pending.strip():
+            self.strays.append(pending.decode(errors="replace"))
+        if refused is not None:
+            raise refused
+        return answers
 
     def parse_errors(self, lines):
         """`e`'s reply lines -> the seven register values (each line checked by the C client

@@ -36,6 +36,12 @@ _F = [lib.DARAN_CLIENT_TYPE_F32] * 2
 _STATE_READS = ("output_shaft.torque_setpoint", "controller.trajectory_done", "error")
 
 
+def _state_batch(drive_id):
+    """state()'s queries: `f` and the three reads, sent in one write."""
+    reads = [("R", drive_id, path, False, 1, (PROPERTIES[path].ctype,)) for path in _STATE_READS]
+    return [("F", drive_id, None, None, 2, _F)] + reads
+
+
 class Drive:
     """Drive `id` on a link (0: every drive, for commands)."""
 
@@ -46,6 +52,7 @@ class Drive:
         self.id = drive_id
         self._table = PROPERTIES
         self.props = PropertyTree(self, self._table)
+        self._state_batch = _state_batch(drive_id)
 
     def __repr__(self):
         return f"<daran.Drive {self.id}>"
@@ -55,10 +62,11 @@ class Drive:
     def _send(self, command, *values, wait=None):
         self.link.transact(command, self.id, values, timeout=wait)
 
-    def move_to(self, position, velocity=None, bandwidth=None, *, wait=None):
-        """`t`: follow `position` (deg) through the input filter; velocity is
-        ignored by drives, bandwidth 1/s."""
-        self._send("T", *_given(position, velocity, bandwidth), wait=wait)
+    def move_to(self, position, bandwidth=None, *, wait=None):
+        """`t`: follow `position` (deg) through the input filter of `bandwidth` 1/s
+        (None keeps the drive's). `t`'s velocity field is read by no drive: sent as 0."""
+        self._send("T", *((position,) if bandwidth is None else (position, 0, bandwidth)),
+                   wait=wait)
 
     def trapezoid(self, position, velocity=None, acceleration=None, *, wait=None):
         """`q`: a trapezoid to `position` (deg) at `velocity` r/min, `acceleration` (r/min)/s."""
@@ -109,6 +117,14 @@ class Drive:
     def set_zero(self, *, wait=None):
         self._send("SZ", wait=wait)
 
+    def enable(self, *, wait=None):
+        """Closed-loop control (`requested_state` 8), as after an e-stop was cleared."""
+        self.set("requested_state", 8, wait=wait)
+
+    def disable(self, *, wait=None):
+        """Idle (`requested_state` 1): the motor delivers no torque."""
+        self.set("requested_state", 1, wait=wait)
+
     def feed_watchdog(self, *, wait=None):
         self._send("U", wait=wait)
 
@@ -132,8 +148,7 @@ class Drive:
 
     def state(self):
         """Position, velocity, torque setpoint, trajectory done and axis error."""
-        position, velocity = self._query("F", 2, _F)
-        torque, done, error = (self.get(path) for path in _STATE_READS)
+        (position, velocity), (torque,), (done,), (error,) = self.link.query_batch(self._state_batch)
         return State(position, velocity, torque, done, error)
 
     def errors(self):

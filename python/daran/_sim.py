@@ -50,12 +50,13 @@ class Sim:
 
     def close(self):
         if self.process.poll() is None:
-            self.process.stdin.close()
+            self.process.terminate()  # with --pty it runs until a signal, as a drive would
             try:
                 self.process.wait(timeout=5)
             except subprocess.TimeoutExpired:
                 self.process.kill()
                 self.process.wait()
+        self.process.stdin.close()
         for stream in (self.process.stdout, self.process.stderr):
             stream.close()
 

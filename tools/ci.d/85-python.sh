@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# ci-weight: 20
+# ci-after: 05-host.sh
+# CI step: the Python package (python/, docs/python.md) installed the way its
+# docs say, offline, into a fresh virtual environment over Debian's packages
+# (`pip install --no-build-isolation`: the cffi extension compiled once), then
+# its pytest suite against build/host's daran-sim on a pty and on its slcan
+# adapter. Cases marked `slow` (the figures of docs/performance.md) are left
+# out. Builds daran-sim only when 05-host.sh has not.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+sim=build/host/port/sim/daran-sim
+if [ ! -x "$sim" ]; then
+  cmake --preset host >/dev/null
+  cmake --build --preset host --target daran-sim -j 2 >/dev/null
+fi
+work=$(mktemp -d "${TMPDIR:-/tmp}/daran-python.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+repo=$(pwd)
+
+/usr/bin/python3 -m venv --system-site-packages "$work/venv"
+# setuptools builds inside the package's folder: a copy of python/ beside links
+# to the C sources it compiles keeps the checkout clean
+mkdir "$work/tree"
+cp -r python "$work/tree/python"
+rm -rf "$work/tree/python/build" "$work/tree/python/"*.egg-info
+for dir in include src client cli; do ln -s "$repo/$dir" "$work/tree/$dir"; done
+"$work/venv/bin/pip" install --quiet --no-index --no-build-isolation "$work/tree/python"
+cd "$work"
+DARAN_SIM="$repo/$sim" "$work/venv/bin/python" -P -m pytest -x -q -m 'not slow' \
+  -p no:cacheprovider --rootdir "$repo/python" "$repo/python/tests"
