@@ -6,8 +6,9 @@ same C code the drive and the `daran` tool use.
 API mode (not ABI mode): the compiler checks the declarations below against
 the real headers, the enums take their values from them, and there is no
 shared library to find at run time. The sources are the client's and the
-few core files it calls (numbers, checksum, phrases), plus the CLI's table
-of the vendor's error bit names; they are read from the repository this
+few core files it calls (numbers, checksum, phrases), the core's CAN codec
+(the vendor's frames: layouts, exact s16x100 scaling, modes) and the CLI's
+table of the vendor's error bit names; they are read from the repository this
 folder sits in (python/..), so the package is built from a checkout.
 """
 import os
@@ -25,8 +26,9 @@ SOURCES = [
     "client/request.c", "client/reply.c", "client/link.c",
     "src/text/number.c", "src/text/text.c", "src/text/result.c", "src/link/checksum.c",
     "cli/errors_bits.c",
+    "src/can/can_codec.c", "src/can/can_encode.c",
 ]
-INCLUDE_DIRS = ["include", "src", "src/text", "src/link", "cli"]
+INCLUDE_DIRS = ["include", "src", "src/text", "src/link", "src/can", "src/request", "cli"]
 
 ffibuilder = FFI()
 
@@ -146,6 +148,43 @@ extern const char *const daran_py_command_names[];
 extern const char *const daran_py_result_names[];
 extern const size_t daran_py_result_count;
 
+/* the properties each query reads (daran_protocol.h's DARAN_QUERY_*), by id
+   name, ended by NULL: what `f g i e` are on CAN */
+extern const char *const daran_py_query_f[];
+extern const char *const daran_py_query_g[];
+extern const char *const daran_py_query_i[];
+extern const char *const daran_py_query_e[];
+
+/* the CAN codec (src/can/can_codec.h): codes, layouts, exact scaling */
+#define DARAN_CAN_SYSTEM ...
+#define DARAN_CAN_PRESET ...
+#define DARAN_CAN_TRACK ...
+#define DARAN_CAN_READ ...
+#define DARAN_CAN_WRITE ...
+#define DARAN_CAN_STATUS ...
+#define DARAN_CAN_SUB_SAVE ...
+#define DARAN_CAN_SUB_START_TRACK ...
+#define DARAN_CAN_SUB_START_IMPEDANCE ...
+#define DARAN_CAN_SUB_FEED ...
+#define DARAN_CAN_TYPE_F32 ...
+#define DARAN_CAN_TYPE_U16 ...
+#define DARAN_CAN_TYPE_S16 ...
+#define DARAN_CAN_TYPE_U32 ...
+#define DARAN_CAN_TYPE_S32 ...
+typedef enum daran_can_layout { DARAN_CAN_LAYOUT_TRACK, DARAN_CAN_LAYOUT_TRAPEZOID,
+    DARAN_CAN_LAYOUT_PASSTHROUGH, DARAN_CAN_LAYOUT_VELOCITY, DARAN_CAN_LAYOUT_TORQUE,
+    DARAN_CAN_LAYOUT_PRESET, DARAN_CAN_LAYOUT_GAINS } daran_can_layout_t;
+bool daran_can_encode_values(daran_can_layout_t layout, const float *values, uint8_t *data);
+void daran_can_decode_values(daran_can_layout_t layout, const uint8_t *data, float *values);
+uint16_t daran_can_get_u16(const uint8_t *bytes);
+uint32_t daran_can_get_u32(const uint8_t *bytes);
+float daran_can_get_f32(const uint8_t *bytes);
+float daran_can_get_scaled(const uint8_t *bytes);
+void daran_can_put_u16(uint8_t *bytes, uint32_t value);
+void daran_can_put_u32(uint8_t *bytes, uint32_t value);
+void daran_can_put_f32(uint8_t *bytes, float value);
+void daran_can_put_property(uint8_t *data, uint32_t address, uint32_t type, uint32_t bits);
+
 /* the link's transport, in Python */
 extern "Python" bool daran_py_write(void *ctx, const char *bytes, size_t len);
 extern "Python" size_t daran_py_read(void *ctx, char *buf, size_t size, uint32_t timeout_ms);
@@ -159,6 +198,7 @@ ffibuilder.set_source("daran._client", r"""
 #include "daran_client.h"
 #include "daran_properties.h"
 #include "errors_bits.h"
+#include "can_codec.h"
 
 void daran_py_request_path(daran_client_request_t *request, const char *path, int scope)
 {
@@ -193,6 +233,12 @@ const size_t daran_py_property_count = sizeof daran_py_properties / sizeof daran
 #define DARAN_PY_COMMAND_(name, c0, c1, feature, cls, reply, retry, handler, arg, can, help, \
                           f1, f2, f3, f4, f5, f6) #name,
 const char *const daran_py_command_names[] = {DARAN_PROTOCOL_COMMANDS(DARAN_PY_COMMAND_)};
+
+#define DARAN_PY_NAME_(id) #id,
+const char *const daran_py_query_f[] = {DARAN_QUERY_F(DARAN_PY_NAME_) NULL};
+const char *const daran_py_query_g[] = {DARAN_QUERY_G(DARAN_PY_NAME_) NULL};
+const char *const daran_py_query_i[] = {DARAN_QUERY_I(DARAN_PY_NAME_) NULL};
+const char *const daran_py_query_e[] = {DARAN_QUERY_E(DARAN_PY_NAME_) NULL};
 
 #define DARAN_PY_RESULT_(name, phrase) #name,
 const char *const daran_py_result_names[] = {DARAN_RESULT_LIST(DARAN_PY_RESULT_)};

@@ -133,6 +133,7 @@ class LineLink:
         #: lines that answered no request (a late `error:` of an unconfirmed command)
         self.strays = collections.deque(maxlen=256)
         self.closed = False
+        self._state_batches = {}
         self._checksum = checksum
         self._retries = retries
         self._build_buf = ffi.new("char[]", lib.DARAN_CLIENT_LINE_MAX)
@@ -287,6 +288,46 @@ class LineLink:
             raise refused
         return answers
 
+    # -- what a Drive asks of its link (daran.can.CanLink answers the same) ------------------
+
+    def command(self, command, drive_id, values, wait=None):
+        """A command answered with nothing (motion, preset, start, system)."""
+        self.transact(command, drive_id, values, timeout=wait)
+
+    def query(self, command, drive_id, expected, types):
+        """`f g i`: the values of its one reply line."""
+        self.transact(command, drive_id)
+        return self.values(expected, types)
+
+    def read(self, drive_id, path, prop):
+        """`r`: the value of a property (prop: its Property, None when unknown)."""
+        self.transact("R", drive_id, path=path, system=prop.system if prop else None)
+        return self.values(1, (prop.ctype,) if prop else None)[0]
+
+    def write(self, drive_id, path, prop, value, wait=None):
+        """`w`, the value sent as the property's type."""
+        self.transact("W", drive_id, path=path, system=prop.system if prop else None,
+                      value=value, ctype=prop.ctype if prop else None, timeout=wait)
+
+    def state(self, drive_id):
+        """`f` and the reads of torque, trajectory_done and error in one write."""
+        from .drive import State
+        batch = self._state_batches.get(drive_id)
+        if batch is None:
+            batch = self._state_batches[drive_id] = [("F", drive_id, None, None, 2, _F2)] + [
+                ("R", drive_id, path, False, 1, (PROPERTIES[path].ctype,)) for path in _STATE_READS]
+        (position, velocity), (torque,), (done,), (error,) = self.query_batch(batch)
+        return State(position, velocity, torque, done, error)
+
+    def error_registers(self, drive_id):
+        """`e`: the seven registers' values."""
+        return self.parse_errors(self.transact("E", drive_id, collect=True))
+
+    def discover(self, drive_id, prefix=None):
+        """`h id properties [prefix]`: the drive's table, by path."""
+        lines = self.transact("H_PROPERTIES", drive_id, path=prefix, collect=True)
+        return {prop.path: prop for prop in map(self.parse_property, lines)}
+
     def parse_errors(self, lines):
         """`e`'s reply lines -> the seven register values (each line checked by the C client
         against its register's name and place)."""
@@ -349,6 +390,11 @@ class LineLink:
         if not self.closed:
             self.closed = True
             self._transport.close()
+
+
+_F2 = (lib.DARAN_CLIENT_TYPE_F32,) * 2
+#: what state() reads beside `f`: the status frame's torque, T and E, by property
+_STATE_READS = ("output_shaft.torque_estimate", "controller.trajectory_done", "error")
 
 
 def _c_line(line):

@@ -41,6 +41,7 @@ class Property(NamedTuple):
     unit: str
     range: str
     can: int  # its vendor CAN address, 0 when none
+    name: str = ""  # its id in the C table (DARAN_PROP_<name>), "" when discovered
 
     @property
     def type(self) -> type:
@@ -57,13 +58,27 @@ def _builtin_properties():
         row = lib.daran_py_properties[i]
         prop = Property(ffi.string(row.path).decode(), bool(row.system), row.type,
                         bool(row.writable), ffi.string(row.unit).decode(),
-                        ffi.string(row.range).decode(), row.can)
+                        ffi.string(row.range).decode(), row.can, ffi.string(row.name).decode())
         rows[prop.path] = prop
     return rows
 
 
 #: the vendor's table (and the library's extensions), by path
 PROPERTIES = _builtin_properties()
+
+#: the same rows by their id name (POS_ESTIMATE)
+BY_NAME = {prop.name: prop for prop in PROPERTIES.values()}
+
+
+def query_properties(command):
+    """The Property rows a query (`F`, `G`, `I`, `E`) reads, in its reply's order."""
+    names = getattr(lib, "daran_py_query_" + command.lower())
+    rows, i = [], 0
+    while names[i] != ffi.NULL:
+        rows.append(BY_NAME[ffi.string(names[i]).decode()])
+        i += 1
+    return rows
+
 
 ERROR_REGISTERS = [ffi.string(lib.daran_client_error_register_name(i)).decode()
                    for i in range(lib.DARAN_CLIENT_ERROR_REGISTERS)]

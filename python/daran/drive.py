@@ -9,8 +9,10 @@ from .props import PropertyTree
 
 
 class State(NamedTuple):
-    """What `state()` reads: position (deg), velocity (r/min), torque setpoint
-    (Nm), whether the trajectory is done, and `axis0.error` (0: none)."""
+    """What `state()` reads: the output shaft's position (deg), velocity (r/min)
+    and torque estimate (Nm), whether the trajectory is done, and the error:
+    `axis0.error` on a line, the status frame's E bit (1 when axis0.error is
+    not 0) on CAN."""
     position: float
     velocity: float
     torque: float
@@ -32,14 +34,8 @@ class Errors(NamedTuple):
 STARTS = {"filtered": ("MT", True), "trapezoid": ("MQ", True), "passthrough": ("MP", True),
           "velocity": ("MV", False), "torque": ("MC", False)}
 
-_F = [lib.DARAN_CLIENT_TYPE_F32] * 2
-_STATE_READS = ("output_shaft.torque_setpoint", "controller.trajectory_done", "error")
-
-
-def _state_batch(drive_id):
-    """state()'s queries: `f` and the three reads, sent in one write."""
-    reads = [("R", drive_id, path, False, 1, (PROPERTIES[path].ctype,)) for path in _STATE_READS]
-    return [("F", drive_id, None, None, 2, _F)] + reads
+_F = (lib.DARAN_CLIENT_TYPE_F32,) * 2
+_I = (lib.DARAN_CLIENT_TYPE_U32, lib.DARAN_CLIENT_TYPE_U32, lib.DARAN_CLIENT_TYPE_U64)
 
 
 class Drive:
@@ -52,7 +48,6 @@ class Drive:
         self.id = drive_id
         self._table = PROPERTIES
         self.props = PropertyTree(self, self._table)
-        self._state_batch = _state_batch(drive_id)
 
     def __repr__(self):
         return f"<daran.Drive {self.id}>"
@@ -60,7 +55,7 @@ class Drive:
     # -- motion (silent commands: a refusal raises DriveRefused; never retried) -------------
 
     def _send(self, command, *values, wait=None):
-        self.link.transact(command, self.id, values, timeout=wait)
+        self.link.command(command, self.id, values, wait)
 
     def move_to(self, position, bandwidth=None, *, wait=None):
         """`t`: follow `position` (deg) through the input filter of `bandwidth` 1/s
@@ -130,32 +125,27 @@ class Drive:
 
     # -- queries --------------------------------------------------------------------------
 
-    def _query(self, command, expected, types=None):
-        self.link.transact(command, self.id)
-        return self.link.values(expected, types)
-
     def position_velocity(self):
         """`f`: (position deg, velocity r/min)."""
-        return tuple(self._query("F", 2, _F))
+        return tuple(self.link.query("F", self.id, 2, _F))
 
     def voltage_current(self):
         """`g`: (bus voltage V, current A)."""
-        return tuple(self._query("G", 2, _F))
+        return tuple(self.link.query("G", self.id, 2, _F))
 
     def info(self):
         """`i`: (firmware version, hardware version, serial number)."""
-        return tuple(self._query("I", 3))
+        return tuple(self.link.query("I", self.id, 3, _I))
 
     def state(self):
-        """Position, velocity, torque setpoint, trajectory done and axis error."""
-        (position, velocity), (torque,), (done,), (error,) = self.link.query_batch(self._state_batch)
-        return State(position, velocity, torque, done, error)
+        """A State: position, velocity, torque, trajectory done, error (one round trip)."""
+        return self.link.state(self.id)
 
     def errors(self):
         """`e`: the seven registers and the vendor's names of their bits that are set."""
-        values = self.link.parse_errors(self.link.transact("E", self.id, collect=True))
         registers, names = {}, {}
-        for index, (register, value) in enumerate(zip(ERROR_REGISTERS, values)):
+        for index, (register, value) in enumerate(zip(ERROR_REGISTERS,
+                                                      self.link.error_registers(self.id))):
             registers[register] = value
             names[register] = [error_bit_name(index, bit) for bit in range(32) if value >> bit & 1]
         return Errors(registers, names)
@@ -171,27 +161,18 @@ class Drive:
 
     def get(self, path):
         """Read a property (`r`) as its type."""
-        prop = lookup(path, self._table)
-        self.link.transact("R", self.id, path=path, system=prop.system if prop else None)
-        return self.link.values(1, (prop.ctype,) if prop else None)[0]
+        return self.link.read(self.id, path, lookup(path, self._table))
 
     def set(self, path, value, *, wait=None):
         """Write a property (`w`), its value sent as the property's type."""
-        prop = lookup(path, self._table)
-        self.link.transact("W", self.id, path=path, system=prop.system if prop else None,
-                           value=value, ctype=prop.ctype if prop else None, timeout=wait)
+        self.link.write(self.id, path, lookup(path, self._table), value, wait)
 
     def discover(self, prefix=None):
         """Read the drive's own property table (`h id properties`) and use it from now on
         for types and the props tree; returns it. Drives without discovery refuse it."""
-        lines = self.link.transact("H_PROPERTIES", self.id, path=prefix, collect=True)
-        table = {}
-        for line in lines:
-            prop = self.link.parse_property(line)
-            table[prop.path] = prop
-        self._table = table
-        self.props = PropertyTree(self, table)
-        return table
+        self._table = self.link.discover(self.id, prefix)
+        self.props = PropertyTree(self, self._table)
+        return self._table
 
 
 def _given(*values):
