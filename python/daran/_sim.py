@@ -1,12 +1,19 @@
 """`daran.sim()`: the simulated drives (daran-sim) on a pseudo-terminal, for
 tests without hardware. The program is $DARAN_SIM, else `daran-sim` on the
 PATH, else the host build of the checkout the package was built from."""
+import collections
 import os
 import pathlib
 import shutil
 import subprocess
+import threading
 
 _CHECKOUT_SIM = pathlib.Path(__file__).resolve().parents[2] / "build/host/port/sim/daran-sim"
+
+
+def _drain(stream, lines):
+    for line in iter(stream.readline, b""):
+        lines.append(line.decode(errors="replace").rstrip("\n"))
 
 
 def sim_program():
@@ -30,6 +37,12 @@ class Sim:
                                         stderr=subprocess.PIPE)
         self.pty = self._path_line()
         self.slcan = self._path_line() if can else None
+        #: the simulator's last output lines (with --can it prints every frame on the bus)
+        self.output = collections.deque(maxlen=1000)
+        self.errors = collections.deque(maxlen=1000)
+        # read both pipes all the time: a full pipe would stop the simulator
+        for stream, lines in ((self.process.stdout, self.output), (self.process.stderr, self.errors)):
+            threading.Thread(target=_drain, args=(stream, lines), daemon=True).start()
 
     def _path_line(self):
         line = self.process.stdout.readline().decode().strip()
@@ -57,8 +70,6 @@ class Sim:
                 self.process.kill()
                 self.process.wait()
         self.process.stdin.close()
-        for stream in (self.process.stdout, self.process.stderr):
-            stream.close()
 
 
 def sim(drives=3, can=False, args=(), **link_options):

@@ -34,12 +34,16 @@ class LinkAPI:
     def scan(self, ids=range(1, 64), timeout=0.02):
         """The ids that answer `f` within `timeout` s each."""
         found = []
-        for drive_id in ids:
-            try:
-                self.transact("F", drive_id, timeout=timeout)
-                found.append(drive_id)
-            except NoReply:
-                pass
+        saved, self.timeout = self.timeout, timeout
+        try:
+            for drive_id in ids:
+                try:
+                    self.query("F", drive_id, 2, None)
+                    found.append(drive_id)
+                except NoReply:
+                    pass
+        finally:
+            self.timeout = saved
         return found
 
     def telemetry(self, timeout=None):

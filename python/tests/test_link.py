@@ -1,4 +1,5 @@
-"""The sync API against three simulated drives on a pty (daran-sim --pty)."""
+"""What the line link adds (test_common.py has what both links do): the
+drive's refusals as DriveRefused, discovery, raw lines, checksums."""
 import time
 
 import pytest
@@ -14,15 +15,6 @@ def wait_until(predicate, timeout=3.0):
             return True
         time.sleep(0.01)
     return False
-
-
-def test_queries_read_the_drives_values(sim3):
-    drive = sim3.drive(2)
-    assert drive.info() == (100, 3, 2026000002)
-    assert drive.position_velocity() == (0.0, 0.0)
-    voltage, current = drive.voltage_current()
-    assert voltage == 24.0 and current == 0.0
-    assert drive.state() == daran.State(0.0, 0.0, 0.0, True, 0)
 
 
 def test_props_read_and_write_each_as_its_type(sim3):
@@ -67,24 +59,6 @@ def test_the_property_table_is_the_c_librarys():
     assert daran.PROPERTIES["config.can_node_id"].can == 31001
 
 
-def test_every_motion_command_moves(sim3):
-    drive = sim3.drive(1)
-    drive.trapezoid(90, 120, 600)
-    assert wait_until(lambda: drive.state().done and abs(drive.state().position - 90) < 0.5)
-    drive.move_to(45, 50)
-    assert wait_until(lambda: abs(drive.position_velocity()[0] - 45) < 0.5)
-    drive.position(30)
-    assert wait_until(lambda: abs(drive.position_velocity()[0] - 30) < 0.5)
-    drive.velocity(60)
-    assert wait_until(lambda: abs(drive.position_velocity()[1] - 60) < 1)
-    drive.velocity(0, 100, 2)
-    assert wait_until(lambda: abs(drive.position_velocity()[1]) < 1)
-    drive.torque(0.05)
-    assert drive.props.axis.output_shaft.input_torque == pytest.approx(0.05)
-    drive.impedance(10, 0, 0, 0.5, 0.01)
-    assert drive.props.axis.controller.config.input_mode == 9
-
-
 def test_refused_motion_raises_and_clear_errors_recovers(sim3):
     drive = sim3.drive(3)
     drive.estop()
@@ -115,24 +89,6 @@ def test_move_together_starts_every_preset_at_once(sim3):
     assert refused.value.result == Result.ERR_NO_PRESET
 
 
-def test_set_zero_save_and_reboot(sim3):
-    drive = sim3.drive(2)
-    drive.trapezoid(20, 120, 600)
-    assert wait_until(lambda: abs(drive.position_velocity()[0] - 20) < 0.1 and drive.state().done)
-    drive.set_zero()
-    assert abs(drive.position_velocity()[0]) < 0.1
-    drive.props.axis.output_shaft.vel_limit = 250
-    drive.save()
-    drive.props.axis.output_shaft.vel_limit = 100
-    drive.reboot()
-    assert wait_until(lambda: drive.props.axis.output_shaft.vel_limit == 250)
-
-
-def test_a_drive_that_does_not_answer_is_no_reply(sim3):
-    with pytest.raises(daran.NoReply) as silent:
-        sim3.drive(9).position_velocity()
-    assert silent.value.result == Result.ERR_NO_REPLY
-    assert sim3.scan(range(1, 6)) == [1, 2, 3]
 
 
 def test_discovery_gives_the_drives_own_table(sim3):
