@@ -87,7 +87,8 @@ typedef struct daran_client_link_config {
 } daran_client_link_config_t;
 typedef struct daran_client_outcome { bool drive_error; uint8_t attempts; size_t lines;
 } daran_client_outcome_t;
-typedef struct daran_client_link { char last[]; size_t last_len; uint32_t bad_lines; ...;
+typedef struct daran_client_link { daran_client_link_config_t config; char last[]; size_t last_len;
+    uint32_t bad_lines; ...;
 } daran_client_link_t;
 
 const char *daran_client_command_word(daran_client_command_t command);

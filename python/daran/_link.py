@@ -288,6 +288,11 @@ class LineLink:
             raise refused
         return answers
 
+    def set_checksum(self, on):
+        """Send (and expect) ` *N` checksums from now on."""
+        self._checksum = bool(on)
+        self._c_link.config.checksum = bool(on)
+
     # -- what a Drive asks of its link (daran.can.CanLink answers the same) ------------------
 
     def command(self, command, drive_id, values, wait=None):
