@@ -8,7 +8,7 @@ import pytest
 SIM = pathlib.Path(__file__).resolve().parents[2] / "build/host/port/sim/daran-sim"
 os.environ.setdefault("DARAN_SIM", str(SIM))
 RECORDINGS = pathlib.Path(os.environ.get(
-    "DARAN_RECORDINGS", pathlib.Path(__file__).resolve().parent / "recordings"))
+    "DARAN_RECORDINGS", pathlib.Path(__file__).resolve().parents[2] / "examples/recordings"))
 
 
 @pytest.fixture
