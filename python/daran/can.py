@@ -64,6 +64,10 @@ class CanLink(LinkAPI):
 
     # -- frames -----------------------------------------------------------------------------
 
+    def send_frame(self, node, code, data):
+        """One 8-byte frame (data: the codec's uint8_t[8]) to `node` with `code`."""
+        self._send(node, code, data)
+
     def _send(self, node, code, data):
         if self.closed:
             raise LinkError(Result.ERR_BUS_ERROR, "the link is closed")
@@ -93,20 +97,27 @@ class CanLink(LinkAPI):
                 return message
             self.unmatched += 1
 
+    def frame_data(self):
+        """A zeroed frame buffer for send_frame."""
+        return self._data_of()
+
     def _data_of(self):
         """The frame buffer, zeroed: bytes a frame does not use are sent as 0."""
         ffi.memmove(self._data, bytes(8), 8)
         return self._data
 
-    def _read_raw(self, node, address, what):
-        """One 0x01E read of `address` at `node`: (type code, value bits). Sent again
-        after a timeout up to `retries` times (a read has no effect)."""
-        read_id = node << 5 | lib.DARAN_CAN_READ
+    def read_raw(self, node, address, type_code, what):
+        """One 0x01E read of `address` at `node` (0: the one drive on the bus answers),
+        the property's type code in bytes 2..3 as the vendor's libraries put it (drives
+        do not read it, C7): (the reply's type code, its value bytes). Sent again after
+        a timeout up to `retries` times (a read has no effect)."""
+        read_code = lib.DARAN_CAN_READ
         data = self._data_of()
-        lib.daran_can_put_property(data, address, 0, 0)
+        lib.daran_can_put_property(data, address, type_code, 0)
 
         def match(message):
-            return (message.arbitration_id == read_id
+            return ((message.arbitration_id & 0x1F) == read_code
+                    and (node == 0 or message.arbitration_id >> 5 == node)
                     and lib.daran_can_get_u16(_view(message.data)) == address
                     and lib.daran_can_get_u16(_view(message.data) + 2) <= lib.DARAN_CAN_TYPE_S32)
 
@@ -125,8 +136,9 @@ class CanLink(LinkAPI):
             return high << 32 | low
         if prop.can == 0:
             raise DaranError(Result.ERR_NOT_BRIDGED, f"{prop.path} has no CAN address")
-        type_code, raw = self._read_raw(node, prop.can, f"read {prop.path} (node {node})")
-        value = _decode(type_code, raw)
+        type_code, raw = self.read_raw(node, prop.can, TYPE_CODES[prop.ctype],
+                                       f"read {prop.path} (node {node})")
+        value = decode(type_code, raw)
         return prop.type(value) if prop.type is not float else float(value)
 
     # -- what a Drive asks of its link --------------------------------------------------------
@@ -158,6 +170,11 @@ class CanLink(LinkAPI):
             self._send(drive_id, lib.DARAN_CAN_SYSTEM, data)
         else:
             raise DaranError(Result.ERR_NOT_BRIDGED, f"{command}: no CAN form")
+
+    def encode(self, layout, values, data):
+        """The codec's layout of three values into data; refused (nothing sent) when a
+        value is not finite or does not fit its s16x100 field."""
+        self._encode(layout, values, data)
 
     def _encode(self, layout, values, data):
         for v in values:
@@ -199,19 +216,25 @@ class CanLink(LinkAPI):
         """The fast read (address 0): the status frame's position, velocity, torque
         estimate, T (trajectory done) and E (an error) bits."""
         _unicast(drive_id)
+        return self.status(drive_id, read=True)
+
+    def status(self, drive_id, read=True, timeout=None):
+        """A status frame of `drive_id` (0: any drive): asked for with the fast read, or
+        (read=False) the one a motion frame makes with enable_reply_state."""
         data = self._data_of()
         lib.daran_can_put_property(data, 0, 0, 0)
 
         def match(message):
             code = message.arbitration_id & 0x1F
-            return (message.arbitration_id >> 5 == drive_id and code & lib.DARAN_CAN_STATUS
-                    and code < _STATUS_BELOW)
+            return ((drive_id == 0 or message.arbitration_id >> 5 == drive_id)
+                    and code & lib.DARAN_CAN_STATUS and code < _STATUS_BELOW)
 
         with self._lock:
-            for _ in range(self.retries + 1):
-                self._drain()
-                self._send(drive_id, lib.DARAN_CAN_READ, data)
-                reply = self._await(match, self.timeout)
+            for _ in range(self.retries + 1 if read else 1):
+                if read:
+                    self._drain()
+                    self._send(drive_id, lib.DARAN_CAN_READ, data)
+                reply = self._await(match, self.timeout if timeout is None else timeout)
                 if reply is not None:
                     code = reply.arbitration_id & 0x1F
                     raw = _view(reply.data)
@@ -241,7 +264,7 @@ class CanLink(LinkAPI):
             self.sim.close()
 
 
-def _decode(type_code, raw):
+def decode(type_code, raw):
     """A read reply's value by its own type code (can.md: 0 f32, 1 u16, 2 s16, 3 u32, 4 s32)."""
     raw = _view(raw)
     if type_code == lib.DARAN_CAN_TYPE_F32:
