@@ -30,6 +30,10 @@ class Errors(NamedTuple):
         return any(self.registers.values())
 
 
+#: the bits of `axis0.telemetry.fields`, in order (protocol.md 11.2)
+TELEMETRY_FIELDS = ("position", "velocity", "torque", "iq", "vbus", "fet_temperature",
+                    "motor_temperature", "error", "done")
+
 #: start kind -> (its start command, whether it takes the relative flag)
 STARTS = {"filtered": ("MT", True), "trapezoid": ("MQ", True), "passthrough": ("MP", True),
           "velocity": ("MV", False), "torque": ("MC", False)}
@@ -122,6 +126,20 @@ class Drive:
 
     def feed_watchdog(self, *, wait=None):
         self._send("U", wait=wait)
+
+    # -- telemetry (a line link: protocol.md 11.2) ----------------------------------------
+
+    def stream(self, period, fields=("position", "velocity")):
+        """Make the drive send a telemetry report every `period` s with `fields` (in
+        TELEMETRY_FIELDS' order in the report); link.telemetry() yields them."""
+        mask = 0
+        for name in fields:
+            mask |= 1 << TELEMETRY_FIELDS.index(name)
+        self.set("telemetry.fields", mask)
+        self.set("telemetry.period", period)
+
+    def stop_stream(self):
+        self.set("telemetry.period", 0)
 
     # -- queries --------------------------------------------------------------------------
 
