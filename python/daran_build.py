@@ -7,8 +7,8 @@ API mode (not ABI mode): the compiler checks the declarations below against
 the real headers, the enums take their values from them, and there is no
 shared library to find at run time. The sources are the client's and the
 few core files it calls (numbers, checksum, phrases), the core's CAN codec
-(the vendor's frames: layouts, exact s16x100 scaling, modes) and the CLI's
-table of the vendor's error bit names; they are read from the repository this
+(the vendor's frames: layouts, exact s16x100 scaling, modes), the CLI's table
+of the vendor's error bit names and its dump file reader; they are read from the repository this
 folder sits in (python/..), so the package is built from a checkout.
 """
 import os
@@ -27,6 +27,7 @@ SOURCES = [
     "src/text/number.c", "src/text/text.c", "src/text/result.c", "src/link/checksum.c",
     "cli/errors_bits.c",
     "src/can/can_codec.c", "src/can/can_encode.c",
+    "cli/dump_file.c", "cli/args.c", "cli/fail.c",
 ]
 INCLUDE_DIRS = ["include", "src", "src/text", "src/link", "src/can", "src/request", "cli"]
 
@@ -186,6 +187,17 @@ void daran_can_put_u32(uint8_t *bytes, uint32_t value);
 void daran_can_put_f32(uint8_t *bytes, float value);
 void daran_can_put_property(uint8_t *data, uint32_t address, uint32_t type, uint32_t bits);
 
+/* the CLI's dump file (cli/dump_file.h): which properties are configuration, and
+   its reader (messages on stderr, as the CLI's) */
+typedef int... cli_status_t;
+typedef struct dump_entry { char path[]; bool axis; char value[]; daran_client_value_t parsed;
+    unsigned line; ...; } dump_entry_t;
+typedef struct dump_file { dump_entry_t entries[]; size_t count; char firmware[]; ...;
+} dump_file_t;
+cli_status_t dump_file_read(const char *name, uint8_t id, dump_file_t *out);
+const char *dump_not_restored_why(const char *path, const char *range);
+size_t daran_format_float(float value, char *buf, size_t size);
+
 /* the link's transport, in Python */
 extern "Python" bool daran_py_write(void *ctx, const char *bytes, size_t len);
 extern "Python" size_t daran_py_read(void *ctx, char *buf, size_t size, uint32_t timeout_ms);
@@ -200,6 +212,8 @@ ffibuilder.set_source("daran._client", r"""
 #include "daran_properties.h"
 #include "errors_bits.h"
 #include "can_codec.h"
+#include "dump_file.h"
+#include "number.h"
 
 void daran_py_request_path(daran_client_request_t *request, const char *path, int scope)
 {

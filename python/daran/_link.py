@@ -309,6 +309,11 @@ class LineLink:
         self.transact("R", drive_id, path=path, system=prop.system if prop else None)
         return self.values(1, (prop.ctype,) if prop else None)[0]
 
+    def read_text(self, drive_id, prop):
+        """`r` of a property: its value as the drive printed it."""
+        self.transact("R", drive_id, path=prop.path, system=prop.system)
+        return ffi.unpack(self._c_link.last, self._c_link.last_len).decode()
+
     def write(self, drive_id, path, prop, value, wait=None):
         """`w`, the value sent as the property's type."""
         self.transact("W", drive_id, path=path, system=prop.system if prop else None,

@@ -195,6 +195,11 @@ class CanLink(LinkAPI):
             raise DaranError(Result.ERR_INVALID_PROPERTY, f"{path}: not in the table")
         return self._read_value(drive_id, prop)
 
+    def read_text(self, drive_id, prop):
+        """A property's value printed as the drive prints it (the core's number printer)."""
+        from .dump import format_value
+        return format_value(prop, self.read(drive_id, prop.path, prop))
+
     def write(self, drive_id, path, prop, value, wait=None):
         if prop is None or prop.can == 0:
             raise DaranError(Result.ERR_INVALID_PROPERTY if prop is None else Result.ERR_NOT_BRIDGED,

@@ -185,6 +185,23 @@ class Drive:
         """Write a property (`w`), its value sent as the property's type."""
         self.link.write(self.id, path, lookup(path, self._table), value, wait)
 
+    def dump(self, file=None):
+        """The drive's configuration in the CLI's dump format (`daran dump`): returned,
+        and written to `file` (a path) when given."""
+        from .dump import dump
+        text = dump(self, "the drive's discovery" if self._table is not PROPERTIES
+                    else "the vendor table")
+        if file is not None:
+            with open(file, "w") as out:
+                out.write(text)
+        return text
+
+    def restore(self, file, save=False, force=False):
+        """Write a dump file into this drive (`daran restore`); returns the lines whose
+        value the drive keeps otherwise, as (line, path, file value, kept value)."""
+        from .dump import restore
+        return restore(self, file, save, force)
+
     def discover(self, prefix=None):
         """Read the drive's own property table (`h id properties`) and use it from now on
         for types and the props tree; returns it. Drives without discovery refuse it."""
