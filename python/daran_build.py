@@ -198,6 +198,10 @@ cli_status_t dump_file_read(const char *name, uint8_t id, dump_file_t *out);
 const char *dump_not_restored_why(const char *path, const char *range);
 size_t daran_format_float(float value, char *buf, size_t size);
 
+/* a transport over a POSIX file descriptor (a serial port, a pty), in C: a request
+   then runs without a call back into Python (docs/python.md, "Figures") */
+bool daran_py_fd_transport(daran_client_transport_t *transport, int *fd);
+
 /* the link's transport, in Python */
 extern "Python" bool daran_py_write(void *ctx, const char *bytes, size_t len);
 extern "Python" size_t daran_py_read(void *ctx, char *buf, size_t size, uint32_t timeout_ms);
@@ -214,6 +218,67 @@ ffibuilder.set_source("daran._client", r"""
 #include "can_codec.h"
 #include "dump_file.h"
 #include "number.h"
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <errno.h>
+#include <poll.h>
+#include <time.h>
+#include <unistd.h>
+
+static bool fd_write(void *ctx, const char *bytes, size_t len)
+{
+    int fd = *(const int *)ctx;
+    while (len > 0) {
+        ssize_t n = write(fd, bytes, len);
+        if (n > 0) {
+            bytes += n;
+            len -= (size_t)n;
+            continue;
+        }
+        struct pollfd p = {fd, POLLOUT, 0};
+        if (n < 0 && (errno == EAGAIN || errno == EINTR) && poll(&p, 1, 1000) >= 0) {
+            continue;
+        }
+        return false;
+    }
+    return true;
+}
+
+static size_t fd_read(void *ctx, char *buf, size_t size, uint32_t timeout_ms)
+{
+    int fd = *(const int *)ctx;
+    struct pollfd p = {fd, POLLIN, 0};
+    if (poll(&p, 1, (int)timeout_ms) <= 0) {
+        return 0;
+    }
+    ssize_t n = read(fd, buf, size);
+    return n > 0 ? (size_t)n : 0;
+}
+
+static uint32_t fd_now_ms(void *ctx)
+{
+    (void)ctx;
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (uint32_t)((uint64_t)t.tv_sec * 1000u + (uint64_t)t.tv_nsec / 1000000u);
+}
+
+bool daran_py_fd_transport(daran_client_transport_t *transport, int *fd)
+{
+    transport->write = fd_write;
+    transport->read = fd_read;
+    transport->now_ms = fd_now_ms;
+    transport->ctx = fd;
+    return true;
+}
+#else
+bool daran_py_fd_transport(daran_client_transport_t *transport, int *fd)
+{
+    (void)transport;
+    (void)fd;
+    return false;
+}
+#endif
 
 void daran_py_request_path(daran_client_request_t *request, const char *path, int scope)
 {
@@ -262,7 +327,7 @@ const size_t daran_py_result_count = DARAN_RESULT_COUNT;
     # relative: setuptools refuses absolute source paths (it runs in python/)
     sources=[os.path.relpath(ROOT / s, HERE) for s in SOURCES],
     include_dirs=[str(ROOT / d) for d in INCLUDE_DIRS],
-    extra_compile_args=["-std=c11", "-O2", "-fno-math-errno"],
+    extra_compile_args=["-std=c11", "-D_DEFAULT_SOURCE", "-O2", "-fno-math-errno"],
 )
 
 if __name__ == "__main__":

@@ -112,6 +112,14 @@ class LineLink:
         self._c_transport = ffi.new("daran_client_transport_t *", {
             "write": lib.daran_py_write, "read": lib.daran_py_read, "now_ms": lib.daran_py_now_ms,
             "ctx": self._handle})
+        # a port with a descriptor is read and written by C: no call back into Python
+        fd = getattr(transport, "fd", None)
+        self._fd = ffi.new("int *", fd if fd is not None else -1)
+        if fd is not None and not lib.daran_py_fd_transport(self._c_transport, self._fd):
+            self._c_transport.write = lib.daran_py_write
+            self._c_transport.read = lib.daran_py_read
+            self._c_transport.now_ms = lib.daran_py_now_ms
+            self._c_transport.ctx = self._handle
         config = ffi.new("daran_client_link_config_t *", {
             "checksum": checksum, "retries": retries, "quiet_ms": int(quiet * 1000),
             "on_report": lib.daran_py_on_report, "report_ctx": self._handle,
@@ -124,7 +132,7 @@ class LineLink:
         self._outcome = ffi.new("daran_client_outcome_t *")
         self._numbers = ffi.new("daran_client_number_t[]", lib.DARAN_CLIENT_REPORT_MAX)
         self._count = ffi.new("size_t *")
-        self._last = ffi.new("daran_client_line_t *")
+        self._last = ffi.new("daran_client_line_t *", {"kind": lib.DARAN_CLIENT_LINE_TEXT})
         self._lines = []
         self._callback_error = None
         self._lock = threading.RLock()
@@ -134,6 +142,7 @@ class LineLink:
         self.strays = collections.deque(maxlen=256)
         self.closed = False
         self._state_batches = {}
+        self._paths = {}
         self._checksum = checksum
         self._retries = retries
         self._build_buf = ffi.new("char[]", lib.DARAN_CLIENT_LINE_MAX)
@@ -151,21 +160,21 @@ class LineLink:
         LinkError."""
         if self.closed:
             raise LinkError(Result.ERR_BUS_ERROR, "the link is closed")
-        request = self._request
-        request.command = COMMANDS[command]
-        request.id = drive_id
-        request.value_count = len(values)
-        for i, v in enumerate(values):
-            request.values[i] = v
-        keep = ffi.new("char[]", path.encode()) if path is not None else ffi.NULL
-        lib.daran_py_request_path(request, keep, SCOPE[system])
-        if value is not None:
-            self._set_value(value, ctype)
+        code = COMMANDS[command]
         if timeout is None:
-            silent = lib.daran_client_reply_shape(request.command) == lib.DARAN_CLIENT_REPLY_SILENT
-            timeout = self.confirm if silent else self.timeout
+            timeout = self.confirm if _SILENT[code] else self.timeout
         with self._lock:
-            self._lines = []
+            request = self._request
+            request.command = code
+            request.id = drive_id
+            request.value_count = len(values)
+            for i, v in enumerate(values):
+                request.values[i] = v
+            lib.daran_py_request_path(request, self._c_path(path), SCOPE[system])
+            if value is not None:
+                self._set_value(value, ctype)
+            if collect:
+                self._lines = []
             self._callback_error = None
             result = lib.daran_client_transact(
                 self._c_link, request, int(timeout * 1000),
@@ -173,9 +182,20 @@ class LineLink:
             if self._callback_error is not None:
                 raise LinkError(Result.ERR_BUS_ERROR, f"transport: {self._callback_error}") \
                     from self._callback_error
-            if result != Result.OK:
+            if result:
                 raise_for(result, self._outcome.drive_error, _describe(command, drive_id, path))
             return self._lines if collect else None
+
+    def _c_path(self, path):
+        """A path as a C string, kept: a loop of requests builds each path once."""
+        if path is None:
+            return ffi.NULL
+        c_path = self._paths.get(path)
+        if c_path is None:
+            if len(self._paths) > 1024:
+                self._paths.clear()
+            c_path = self._paths[path] = ffi.new("char[]", path.encode())
+        return c_path
 
     def _set_value(self, value, ctype):
         if ctype is None:
@@ -301,13 +321,27 @@ class LineLink:
 
     def query(self, command, drive_id, expected, types):
         """`f g i`: the values of its one reply line."""
-        self.transact(command, drive_id)
-        return self.values(expected, types)
+        with self._lock:
+            self.transact(command, drive_id)
+            return self.values(expected, types)
 
     def read(self, drive_id, path, prop):
         """`r`: the value of a property (prop: its Property, None when unknown)."""
-        self.transact("R", drive_id, path=path, system=prop.system if prop else None)
-        return self.values(1, (prop.ctype,) if prop else None)[0]
+        with self._lock:
+            self.transact("R", drive_id, path=path, system=prop.system if prop else None)
+            return self._one_value(prop.ctype if prop else None)
+
+    def _one_value(self, ctype):
+        """The one number of the last reply line, as its type."""
+        last = self._last
+        last.payload = self._c_link.last
+        last.len = self._c_link.last_len
+        result = lib.daran_client_parse_values(last, self._numbers, 1, 1, self._count)
+        if result:
+            raise LinkError(result, "reply: " + ffi.unpack(last.payload, last.len).decode())
+        if ctype == lib.DARAN_CLIENT_TYPE_F32:
+            return float(self._numbers[0].f32)
+        return number_value(self._numbers, ctype)
 
     def read_text(self, drive_id, prop):
         """`r` of a property: its value as the drive printed it."""
@@ -403,6 +437,9 @@ class LineLink:
 
 
 _F2 = (lib.DARAN_CLIENT_TYPE_F32,) * 2
+#: by command code: whether it is answered with nothing (its wait is `confirm`)
+_SILENT = [lib.daran_client_reply_shape(code) == lib.DARAN_CLIENT_REPLY_SILENT
+           for code in range(lib.DARAN_CLIENT_CMD_COUNT)]
 #: what state() reads beside `f`: the status frame's torque, T and E, by property
 _STATE_READS = ("output_shaft.torque_estimate", "controller.trajectory_done", "error")
 

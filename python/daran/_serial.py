@@ -15,6 +15,8 @@ class SerialTransport:
             self._fd = port.fileno()
         except (AttributeError, OSError, ValueError):  # a port without a descriptor (Windows)
             self._fd = None
+        #: the descriptor the C link reads and writes itself (None: it calls read/write)
+        self.fd = self._fd
 
     def write(self, data):
         if self._fd is not None:

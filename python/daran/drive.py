@@ -52,6 +52,7 @@ class Drive:
         self.id = drive_id
         self._table = PROPERTIES
         self.props = PropertyTree(self, self._table)
+        self._props = {}  # path -> its Property, looked up once
 
     def __repr__(self):
         return f"<daran.Drive {self.id}>"
@@ -179,7 +180,10 @@ class Drive:
 
     def get(self, path):
         """Read a property (`r`) as its type."""
-        return self.link.read(self.id, path, lookup(path, self._table))
+        prop = self._props.get(path)
+        if prop is None:
+            prop = self._props[path] = lookup(path, self._table)
+        return self.link.read(self.id, path, prop)
 
     def set(self, path, value, *, wait=None):
         """Write a property (`w`), its value sent as the property's type."""
@@ -207,6 +211,7 @@ class Drive:
         for types and the props tree; returns it. Drives without discovery refuse it."""
         self._table = self.link.discover(self.id, prefix)
         self.props = PropertyTree(self, self._table)
+        self._props = {}
         return self._table
 
 
