@@ -33,6 +33,23 @@ def open_can(bus, **options):
     return CanLink(bus, **options)
 
 
+def scan(ports=None, ids=range(1, 64), baudrate=115200, timeout=0.02):
+    """The drives on each serial port: {port: [ids that answer `f`]}. `ports`: paths
+    (None: every port pyserial lists). A port that cannot be opened is left out."""
+    if ports is None:
+        from serial.tools import list_ports
+        ports = [port.device for port in list_ports.comports()]
+    found = {}
+    for port in ports:
+        try:
+            link = open(port, baudrate, retries=0)
+        except OSError:
+            continue
+        with link:
+            found[port] = link.scan(ids, timeout)
+    return found
+
+
 def sim(drives=3, can=False, args=(), **options):
     """Start daran-sim with `drives` drives and return an open link to them
     (daran._sim.sim)."""
@@ -40,6 +57,6 @@ def sim(drives=3, can=False, args=(), **options):
     return start(drives, can, args, **options)
 
 
-__all__ = ["open", "open_can", "sim", "Drive", "State", "Errors", "Report", "Property",
+__all__ = ["open", "open_can", "sim", "scan", "Drive", "State", "Errors", "Report", "Property",
            "PROPERTIES", "ERROR_REGISTERS", "Result", "DaranError", "DriveRefused", "NoReply",
            "LinkError"]

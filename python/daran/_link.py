@@ -90,7 +90,11 @@ def daran_py_on_line(ctx, line):
 
 @ffi.def_extern()
 def daran_py_on_stray(ctx, line):
-    ffi.from_handle(ctx).strays.append(ffi.unpack(line.payload, line.len).decode())
+    link = ffi.from_handle(ctx)
+    text = ffi.unpack(line.payload, line.len).decode()
+    link.strays.append(text)
+    if line.kind == lib.DARAN_CLIENT_LINE_ERROR:
+        link.late_errors.append((line.error, text))
 
 
 @ffi.def_extern()
@@ -140,6 +144,9 @@ class LineLink:
         self.reports = collections.deque(maxlen=reports)
         #: lines that answered no request (a late `error:` of an unconfirmed command)
         self.strays = collections.deque(maxlen=256)
+        #: (result, line) of the `error:` lines among them: refusals that came after
+        #: their command's `confirm` window
+        self.late_errors = collections.deque(maxlen=256)
         self.closed = False
         self._state_batches = {}
         self._paths = {}

@@ -10,7 +10,7 @@ import tempfile
 from . import __version__
 from ._client import ffi, lib
 from ._table import Result
-from .errors import DaranError
+from .errors import DaranError, DriveRefused
 
 
 def not_restored_why(prop):
@@ -105,12 +105,18 @@ def restore(drive, path, save=False, force=False):
     entries = [content.entries[i] for i in range(content.count)]
     paths = [ffi.string(e.path).decode() for e in entries]
     previous = [drive.get(p) for p in paths]
+    late = getattr(drive.link, "late_errors", None)
     written = 0
     try:
         for entry, p in zip(entries, paths):
             written += 1
+            if late is not None:
+                late.clear()
             drive.set(p, _value(entry))
-            drive.get(p)
+            kept = drive.get(p)
+            if late and not _same(kept, _value(entry)):
+                # the refusal came after the write's confirm window, before its read-back
+                raise DriveRefused(late[-1][0], f"w {p} {ffi.string(entry.value).decode()}")
     except DaranError:
         for p, value in list(zip(paths, previous))[:written][::-1]:
             drive.set(p, value)

@@ -10,7 +10,7 @@ import daran
 
 @pytest.fixture
 def can_link():
-    link = daran.sim(drives=3, can=True, retries=0, timeout=0.02)
+    link = daran.sim(drives=3, can=True, retries=0, timeout=1.0)
     yield link
     link.close()
 
@@ -44,7 +44,7 @@ def test_a_mute_drive_is_no_reply_until_it_recovers(can_link):
 
 
 def test_a_query_is_retried_after_a_lost_reply_a_command_is_not():
-    link = daran.sim(drives=2, can=True, retries=1, timeout=0.02)
+    link = daran.sim(drives=2, can=True, retries=1, timeout=1.0)
     try:
         link.sim.fault(1, "can-lose", 1)
         settle(link)
@@ -59,7 +59,7 @@ def test_replies_are_matched_not_taken_because_they_came_next(can_link):
     for position in range(5):
         drive.move_to(position)  # each answered by a status frame nobody asked for
         assert drive.get("config.can_node_id") == 2
-        assert drive.props.vbus_voltage == 24.0
+        assert drive.props.vbus_voltage == pytest.approx(24, abs=0.5)
     assert can_link.unmatched > 0
 
 
