@@ -7,8 +7,20 @@ import pathlib
 import shutil
 import subprocess
 import threading
+import weakref
 
 _CHECKOUT_SIM = pathlib.Path(__file__).resolve().parents[2] / "build/host/port/sim/daran-sim"
+
+
+def _stop(process):
+    if process.poll() is None:
+        process.terminate()  # with --pty it runs until a signal, as a drive would
+        try:
+            process.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.wait()
+    process.stdin.close()
 
 
 def _drain(stream, lines):
@@ -35,6 +47,8 @@ class Sim:
         command += list(args)
         self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                         stderr=subprocess.PIPE)
+        # a simulator outlives no script: stopped at exit when nobody closed it
+        self._finalizer = weakref.finalize(self, _stop, self.process)
         self.pty = self._path_line()
         self.slcan = self._path_line() if can else None
         #: the simulator's last output lines (with --can it prints every frame on the bus)
@@ -62,14 +76,7 @@ class Sim:
         self.directive(" ".join(["!fault", str(drive_id), kind, *map(str, args)]))
 
     def close(self):
-        if self.process.poll() is None:
-            self.process.terminate()  # with --pty it runs until a signal, as a drive would
-            try:
-                self.process.wait(timeout=5)
-            except subprocess.TimeoutExpired:
-                self.process.kill()
-                self.process.wait()
-        self.process.stdin.close()
+        self._finalizer()
 
 
 def sim(drives=3, can=False, args=(), **link_options):
