@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ci-weight: 20
+# ci-weight: 40
 # ci-after: 05-host.sh
 # CI step: the Python package (python/, docs/python.md) installed the way its
 # docs say, offline, into a fresh virtual environment over Debian's packages
