@@ -198,6 +198,12 @@ cli_status_t dump_file_read(const char *name, uint8_t id, dump_file_t *out);
 const char *dump_not_restored_why(const char *path, const char *range);
 size_t daran_format_float(float value, char *buf, size_t size);
 
+/* a one-value query in one call: daran_client_transact (its result returned), then
+   daran_client_parse_values of its reply line, exactly one number (*parsed) */
+daran_result_t daran_py_query_one(daran_client_link_t *link, const daran_client_request_t *request,
+                                  uint32_t timeout_ms, daran_client_outcome_t *outcome,
+                                  daran_client_number_t *number, daran_result_t *parsed);
+
 /* a transport over a POSIX file descriptor (a serial port, a pty), in C: a request
    then runs without a call back into Python (docs/python.md, "Figures") */
 bool daran_py_fd_transport(daran_client_transport_t *transport, int *fd);
@@ -279,6 +285,21 @@ bool daran_py_fd_transport(daran_client_transport_t *transport, int *fd)
     return false;
 }
 #endif
+
+daran_result_t daran_py_query_one(daran_client_link_t *link, const daran_client_request_t *request,
+                                  uint32_t timeout_ms, daran_client_outcome_t *outcome,
+                                  daran_client_number_t *number, daran_result_t *parsed)
+{
+    daran_result_t result = daran_client_transact(link, request, timeout_ms, NULL, NULL, outcome);
+    *parsed = DARAN_OK;
+    if (result == DARAN_OK) {
+        daran_client_line_t line = {DARAN_CLIENT_LINE_TEXT, link->last, link->last_len, false,
+                                    DARAN_OK};
+        size_t count;
+        *parsed = daran_client_parse_values(&line, number, 1, 1, &count);
+    }
+    return result;
+}
 
 void daran_py_request_path(daran_client_request_t *request, const char *path, int scope)
 {

@@ -69,7 +69,7 @@ def main():
     n = parser.parse_args().n
     with tempfile.TemporaryDirectory() as work:
         exe = c_client(work)
-        link = daran.sim(drives=3)
+        link = daran.sim(drives=3, timeout=1.0)
         try:
             drive = link.drive(1)
             # alternated, medians of the rounds: the machine is shared

@@ -136,6 +136,7 @@ class LineLink:
         self._outcome = ffi.new("daran_client_outcome_t *")
         self._numbers = ffi.new("daran_client_number_t[]", lib.DARAN_CLIENT_REPORT_MAX)
         self._count = ffi.new("size_t *")
+        self._parsed = ffi.new("daran_result_t *")
         self._last = ffi.new("daran_client_line_t *", {"kind": lib.DARAN_CLIENT_LINE_TEXT})
         self._lines = []
         self._callback_error = None
@@ -334,21 +335,28 @@ class LineLink:
 
     def read(self, drive_id, path, prop):
         """`r`: the value of a property (prop: its Property, None when unknown)."""
+        if self.closed:
+            raise LinkError(Result.ERR_BUS_ERROR, "the link is closed")
         with self._lock:
-            self.transact("R", drive_id, path=path, system=prop.system if prop else None)
-            return self._one_value(prop.ctype if prop else None)
-
-    def _one_value(self, ctype):
-        """The one number of the last reply line, as its type."""
-        last = self._last
-        last.payload = self._c_link.last
-        last.len = self._c_link.last_len
-        result = lib.daran_client_parse_values(last, self._numbers, 1, 1, self._count)
-        if result:
-            raise LinkError(result, "reply: " + ffi.unpack(last.payload, last.len).decode())
-        if ctype == lib.DARAN_CLIENT_TYPE_F32:
-            return float(self._numbers[0].f32)
-        return number_value(self._numbers, ctype)
+            request = self._request
+            request.command = _READ
+            request.id = drive_id
+            request.value_count = 0
+            lib.daran_py_request_path(request, self._c_path(path),
+                                      SCOPE[prop.system if prop else None])
+            number = self._numbers
+            result = lib.daran_py_query_one(self._c_link, request, int(self.timeout * 1000),
+                                            self._outcome, number, self._parsed)
+            if result:
+                raise_for(result, self._outcome.drive_error, _describe("R", drive_id, path))
+            if self._parsed[0]:
+                raise LinkError(self._parsed[0], "reply: " + ffi.unpack(
+                    self._c_link.last, self._c_link.last_len).decode())
+            if prop is None:
+                return number_value(number)
+            if prop.ctype == lib.DARAN_CLIENT_TYPE_F32:
+                return float(number[0].f32)
+            return number_value(number, prop.ctype)
 
     def read_text(self, drive_id, prop):
         """`r` of a property: its value as the drive printed it."""
@@ -444,6 +452,7 @@ class LineLink:
 
 
 _F2 = (lib.DARAN_CLIENT_TYPE_F32,) * 2
+_READ = COMMANDS["R"]
 #: by command code: whether it is answered with nothing (its wait is `confirm`)
 _SILENT = [lib.daran_client_reply_shape(code) == lib.DARAN_CLIENT_REPLY_SILENT
            for code in range(lib.DARAN_CLIENT_CMD_COUNT)]
