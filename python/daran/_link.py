@@ -422,7 +422,8 @@ class LineLink:
         returns its reply lines."""
         payload = text.encode()
         shape = lib.daran_client_line_shape(payload, len(payload), ffi.NULL)
-        timeout = self.timeout if timeout is None else timeout
+        if timeout is None:
+            timeout = self.confirm if shape == lib.DARAN_CLIENT_REPLY_SILENT else self.timeout
         with self._lock:
             self._lines = []
             self._callback_error = None

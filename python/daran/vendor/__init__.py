@@ -89,6 +89,20 @@ def _vendor_path(id_num, prop):
     return prop, True, lookup(prop)
 
 
+def send_command(order="", cn=0):
+    """A line of the caller's, sent once (` *N` when cn): True when the drive took it."""
+    link = _link or connect()
+    link.set_checksum(bool(cn))
+    try:
+        link.send_line(order)
+    except DaranError as exc:
+        print("---error in send_command---:", exc)
+        return False
+    finally:
+        link.set_checksum(bool(CHECK_FLAG))
+    return True
+
+
 # -- motion ---------------------------------------------------------------------------------
 
 def preset_angle(id_num=1, angle=0, t=0, param=0, mode=0):
