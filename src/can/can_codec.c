@@ -69,26 +69,20 @@ int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)
     /* Exactly: value * 100.0f + 0.5f rounds twice, and a value within an ulp
      * of a half count went up. |value| = m * 2^-shift with m < 2^24, so
      * m * 100 < 2^31 is exact in 32 bits and one shift rounds it, half away
-     * from zero. A shift of 0 or less is |value| >= 2^23: far past the
-     * limit (inf and NaN too), so no wider arithmetic is needed. */
+     * from zero. Below 2^-8 (subnormals and zeros too) x 100 is under 0.4,
+     * which rounds to 0; from 2^9 up (inf and NaN too) it is past the limit:
+     * the shift in between is 15..31. */
     uint32_t bits;
     memcpy(&bits, &value, sizeof bits);
     uint32_t negative = bits >> 31;
     uint32_t biased = bits >> 23 & 0xFFu;
-    uint32_t significand = bits & 0x7FFFFFu;
-    if (biased != 0u) {
-        significand |= 0x800000u;
-    } else {
-        biased = 1u; /* a subnormal: the same scale as the least normal */
-    }
-    int shift = 150 - (int)biased;
-    uint32_t limit = negative != 0u ? 32768u : 32767u;
-    uint32_t magnitude = limit + 1u;
-    if (shift > 31) {
-        magnitude = 0;
-    } else if (shift > 0) {
-        uint32_t product = significand * 100u;
-        magnitude = (product + (1u << (shift - 1))) >> shift;
+    uint32_t limit = 32767u + negative;
+    uint32_t magnitude = 0;
+    if (biased >= 136u) {
+        magnitude = limit + 1u;
+    } else if (biased >= 119u) {
+        uint32_t shift = 150u - biased;
+        magnitude = (((bits & 0x7FFFFFu) | 0x800000u) * 100u + ((1u << shift) >> 1)) >> shift;
     }
     int fits = magnitude <= limit;
     if (!fits) {
