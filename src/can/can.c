@@ -31,27 +31,31 @@ static daran_value_t read_or_zero(daran_drive_t *drive, daran_prop_t prop)
 {
     daran_value_t value;
     if (daran_get(drive, prop, &value) != DARAN_OK) {
-        value.u64 = 0;
+        value.u32 = 0; /* f32 0 too: only those are read */
     }
     return value;
 }
 
 /* The status frame (2.7): position, velocity and torque, with T (the
- * trajectory is done) and E (axis0.error is not 0) in the id's code. */
+ * trajectory is done) and E (axis0.error is not 0) in the id's code; the
+ * i-th read goes to the i-th place. */
 static void send_status(daran_can_t *can, uint32_t node)
 {
     static const daran_prop_t reads[] = {DARAN_PROP_POS_ESTIMATE, DARAN_PROP_VEL_ESTIMATE,
                                          DARAN_PROP_TORQUE_ESTIMATE, DARAN_PROP_TRAJECTORY_DONE,
                                          DARAN_PROP_AXIS_ERROR};
-    daran_value_t values[sizeof reads / sizeof reads[0]];
-    for (size_t i = 0; i < sizeof reads / sizeof reads[0]; i++) {
-        values[i] = read_or_zero(can->drive, reads[i]);
-    }
     uint8_t data[8];
-    daran_can_put_u32(data, values[0].u32);
-    (void)daran_can_put_scaled(data + 4, values[1].f32, 1);
-    (void)daran_can_put_scaled(data + 6, values[2].f32, 1);
-    uint32_t code = DARAN_CAN_STATUS | (values[3].u32 != 0u ? 2u : 0u) | (values[4].u32 != 0u ? 4u : 0u);
+    uint32_t code = DARAN_CAN_STATUS;
+    for (unsigned i = 0; i < sizeof reads / sizeof reads[0]; i++) {
+        daran_value_t value = read_or_zero(can->drive, reads[i]);
+        if (i == 0u) {
+            daran_can_put_u32(data, value.u32);
+        } else if (i < 3u) {
+            (void)daran_can_put_scaled(data + 2u + 2u * i, value.f32, 1);
+        } else if (value.u32 != 0u) {
+            code |= 1u << (i - 2u); /* T bit 1, E bit 2 */
+        }
+    }
     send(can, DARAN_CAN_ID(node, code), data);
 }
 
@@ -74,125 +78,105 @@ static bool value_refused(daran_result_t result)
            result == DARAN_ERR_INVALID_MODE;
 }
 
-/* 0x019..0x01D: t q p v c with every value given (2.1). */
-static void direct_motion(daran_can_t *can, uint32_t node, uint32_t code, const uint8_t *data)
+/* 0x019..0x01D, t q p v c with every value given (2.1), and 0x00C, the
+ * preset, its third field kept as raw / 100 for the start to read (C1; it
+ * moves nothing, 2.4): three values by the code's layout, the first a
+ * finite f32. A mode is the shape's to check, as a line's is. */
+static void value_frame(daran_can_t *can, uint32_t node, uint32_t code, const uint8_t *data)
 {
-    daran_shape_t shape = (daran_shape_t)(code - DARAN_CAN_TRACK);
-    float values[3];
-    daran_can_decode_values((daran_can_layout_t)shape, data, values);
-    daran_result_t result = daran_is_finite(values[0]) ? daran_shape_check(shape, values, 3)
-                                                       : DARAN_ERR_INVALID_VALUE;
-    if (result == DARAN_OK) {
-        result = daran_run_motion(can->drive, shape, values, 3);
-    }
-    if (!value_refused(result)) {
-        reply_state(can, node);
-    }
-}
-
-/* 0x00C: the preset, its third field kept as raw / 100 for the start to
- * read (C1); it moves nothing (2.4). */
-static void preset(daran_can_t *can, uint32_t node, const uint8_t *data)
-{
-#if DARAN_ENABLE_MULTI_MOTOR
+    bool preset = code == DARAN_CAN_PRESET;
+    daran_can_layout_t layout =
+        preset ? DARAN_CAN_LAYOUT_PRESET : (daran_can_layout_t)(code - DARAN_CAN_TRACK);
     float values[DARAN_PRESET_VALUES];
-    daran_can_decode_values(DARAN_CAN_LAYOUT_PRESET, data, values);
+    daran_can_decode_values(layout, data, values);
     if (!daran_is_finite(values[0])) {
         return;
     }
-    daran_store_preset(can->drive, values, DARAN_PRESET_FROM_CAN);
-    reply_state(can, node);
-#else
-    (void)can;
-    (void)node;
-    (void)data;
-#endif
-}
-
-/* Sub-codes 0x10..0x15: a start of the preset (2.4). A start the drive
- * refuses is ignored and keeps the preset (C23, C29). */
-static void start(daran_can_t *can, uint32_t subcode, const uint8_t *data, bool broadcast)
-{
+    if (preset) {
 #if DARAN_ENABLE_MULTI_MOTOR
-    daran_drive_t *drive = can->drive;
-    uint32_t first = daran_can_get_u16(data + 4);
-    if (subcode == DARAN_CAN_SUB_START_IMPEDANCE) {
-        float gains[3];
-        daran_can_decode_values(DARAN_CAN_LAYOUT_GAINS, data, gains);
-        (void)daran_start_impedance(drive, gains[1], gains[2], broadcast);
+        daran_store_preset(can->drive, values, DARAN_PRESET_FROM_CAN);
+#else
         return;
-    }
-    daran_shape_t shape = (daran_shape_t)(subcode - DARAN_CAN_SUB_START_TRACK);
-    float values[DARAN_PRESET_VALUES];
-    memcpy(values, drive->preset, sizeof values);
-    bool rel = false;
-    if (shape >= DARAN_SHAPE_VELOCITY) {
-        /* The mode in p3: raw / 100 of a CAN preset, the mode itself of an
-         * ASCII one; x 100, both are what mode_of() reads (C1). */
-        float p3 = values[2];
-        if (!(p3 >= 0.0f && p3 <= 10.0f)) {
+#endif
+    } else {
+        daran_shape_t shape = (daran_shape_t)layout;
+        daran_result_t result = daran_shape_check(shape, values, 3);
+        if (result == DARAN_OK) {
+            result = daran_run_motion(can->drive, shape, values, 3);
+        }
+        if (value_refused(result)) {
             return;
         }
-        values[2] = daran_can_mode_of((uint32_t)(p3 * 100.0f + 0.5f), shape == DARAN_SHAPE_TORQUE);
-        if (values[2] == 0.0f) {
-            return;
-        }    } else if (first == 1u || first == 100u) {
-        rel = true; /* relative to the position setpoint (C2) */
-    } else if (first != 0u) {
+    }
+    reply_state(can, node);
+}
+
+#if DARAN_ENABLE_MULTI_MOTOR
+/* Sub-codes 0x10..0x14: a start of the preset as @p shape (2.4), with the
+ * start's flag (bytes 4..5). A start the drive refuses is ignored and keeps
+ * the preset (C23, C29). */
+static void start(daran_drive_t *drive, daran_shape_t shape, uint32_t flag, bool broadcast)
+{
+    float values[DARAN_PRESET_VALUES];
+    memcpy(values, drive->preset, sizeof values);
+    /* 0 absolute, 1 relative to the position setpoint (C2); v and c have
+     * no flag, and a start of theirs reads none */
+    uint32_t rel = daran_can_whole_of(flag);
+    if (shape >= DARAN_SHAPE_VELOCITY) {
+        /* The mode in p3: raw / 100 of a CAN preset, the mode itself of an
+         * ASCII one; x 100, both read as a mode field does (C1). */
+        uint32_t p3;
+        memcpy(&p3, &values[2], sizeof p3);
+        if (p3 > 0x41200000u) {
+            return; /* past 10.0f as bits: a sign (-0 too), NaN, inf: no mode */
+        }
+        /* a mode the shape has not is the start's to refuse, as a line's */
+        values[2] = (float)daran_can_whole_of((uint32_t)(values[2] * 100.0f + 0.5f));
+    } else if (rel > 1u) {
         return;
     }
-    (void)daran_start_preset(drive, shape, values, rel, broadcast);
-#else
-    (void)can;
-    (void)subcode;
-    (void)data;
-    (void)broadcast;
-#endif
+    (void)daran_start_preset(drive, shape, values, rel != 0u, broadcast);
 }
+#endif
 
 /* 0x008 (2.3). None of them is answered. */
 static void system_command(daran_can_t *can, const uint8_t *data, bool broadcast)
 {
+    daran_drive_t *drive = can->drive;
     uint32_t subcode = daran_can_get_u32(data);
     daran_action_t action;
     if (daran_can_action_of(subcode, &action)) {
-        (void)daran_run_action(can->drive, action);
-    } else if (subcode >= DARAN_CAN_SUB_START_TRACK && subcode <= DARAN_CAN_SUB_START_IMPEDANCE) {
-        start(can, subcode, data, broadcast);
+        (void)daran_run_action(drive, action);
     } else if (subcode == DARAN_CAN_SUB_RESTORE || subcode == DARAN_CAN_SUB_FIRMWARE) {
-        daran_pass_system(can->drive, subcode, daran_can_get_u16(data + 4),
-                          daran_can_get_u16(data + 6));
+        daran_pass_system(drive, subcode, daran_can_get_u16(data + 4), daran_can_get_u16(data + 6));
     }
+#if DARAN_ENABLE_MULTI_MOTOR
+    else if (subcode - DARAN_CAN_SUB_START_TRACK <= (uint32_t)DARAN_SHAPE_IMPEDANCE) {
+        /* the starts follow the shapes' order, the impedance start last */
+        daran_shape_t shape = (daran_shape_t)(subcode - DARAN_CAN_SUB_START_TRACK);
+        if (shape == DARAN_SHAPE_IMPEDANCE) {
+            float gains[3];
+            daran_can_decode_values(DARAN_CAN_LAYOUT_GAINS, data, gains);
+            (void)daran_start_impedance(drive, gains[1], gains[2], broadcast);
+        } else {
+            start(drive, shape, daran_can_get_u16(data + 4), broadcast);
+        }
+    }
+#else
+    (void)broadcast;
+#endif
     /* 0x20 feeds the watchdogs, as every frame for the drive already has
      * (C18, C19); any other sub-code is ignored (C23). */
 }
 
-/* 0x01E (2.6, 2.7): a property's value, or the status frame for address 0. */
-static void read_property(daran_can_t *can, uint32_t node, const uint8_t *data)
-{
-    uint16_t address = daran_can_get_u16(data);
-    if (address == 0u) {
-        send_status(can, node);
-        return;
-    }
-    daran_prop_t prop;
-    daran_value_t value;
-    if (!daran_can_property_at(address, &prop) || daran_get(can->drive, prop, &value) != DARAN_OK) {
-        return; /* no such address here (C24), or the HAL could not read it */
-    }
-    uint8_t reply[8];
-    daran_can_put_property(reply, address, daran_can_type_of(prop), value.u32);
-    send(can, DARAN_CAN_ID(node, DARAN_CAN_READ), reply);
-}
-
 /* A write's value, decoded by the frame's type code and converted exactly
- * to the property's type (C6, C25): false when it does not fit. */
+ * to the property's type (C6, C25): false when it does not fit. An integer
+ * travels as its sign and magnitude, so every pair of types is one road. */
 static bool write_value(daran_prop_type_t type, uint32_t code, const uint8_t *data,
                         daran_value_t *value)
 {
-    uint32_t bits = daran_can_get_u32(data);
+    uint32_t magnitude = daran_can_get_u32(data);
     bool negative = false;
-    uint32_t magnitude = bits;
     if (code == DARAN_CAN_TYPE_F32) {
         float given = daran_can_get_f32(data);
         if (type == DARAN_TYPE_F32) {
@@ -209,46 +193,61 @@ static bool write_value(daran_prop_type_t type, uint32_t code, const uint8_t *da
         if ((float)magnitude != size) {
             return false;
         }
-    } else if (code == DARAN_CAN_TYPE_U16) {
-        magnitude = bits & 0xFFFFu;
-    } else if (code == DARAN_CAN_TYPE_S16 || code == DARAN_CAN_TYPE_S32) {
-        int32_t signed_value = code == DARAN_CAN_TYPE_S16 ? (int16_t)(uint16_t)bits : (int32_t)bits;
-        negative = signed_value < 0;
-        magnitude = negative ? 0u - (uint32_t)signed_value : (uint32_t)signed_value;
-    } else if (code != DARAN_CAN_TYPE_U32) {
+    } else if (code <= DARAN_CAN_TYPE_S32) {
+        if (code < DARAN_CAN_TYPE_U32) { /* the 16-bit codes */
+            magnitude = code == DARAN_CAN_TYPE_S16 ? (uint32_t)(int16_t)(uint16_t)magnitude
+                                                   : magnitude & 0xFFFFu;
+        }
+        /* S16 and S32, the even codes */
+        negative = (code & 1u) == 0u && (int32_t)magnitude < 0;
+        if (negative) {
+            magnitude = 0u - magnitude;
+        }
+    } else {
         return false;
     }
     if (type == DARAN_TYPE_F32) {
         value->f32 = negative ? -(float)magnitude : (float)magnitude; /* the nearest float32 */
         return true;
     }
+    value->u32 = negative ? 0u - magnitude : magnitude; /* two's complement, as s32 reads it */
     if (type == DARAN_TYPE_S32) {
-        if (magnitude > (negative ? 0x80000000u : 0x7FFFFFFFu)) {
-            return false;
-        }
-        value->u32 = negative ? 0u - magnitude : magnitude; /* two's complement, as s32 reads it */
-        return true;
+        return magnitude <= 0x7FFFFFFFu + (uint32_t)negative;
     }
-    value->u32 = magnitude;
     return !negative || magnitude == 0u;
 }
 
-/* 0x01F (2.6): checked as ASCII `w` checks it; never answered. */
-static void write_property(daran_can_t *can, const uint8_t *data)
+/* 0x01E, a read (2.6, 2.7): the property's value, or the status frame for
+ * address 0; 0x01F, a write (2.6): checked as ASCII `w` checks it, never
+ * answered. */
+static void property_frame(daran_can_t *can, uint32_t node, uint32_t code, const uint8_t *data)
 {
-    daran_prop_t prop;
-    if (!daran_can_property_at(daran_can_get_u16(data), &prop)) {
-        return; /* C24 */
+    uint16_t address = daran_can_get_u16(data);
+    bool read = code == DARAN_CAN_READ;
+    if (read && address == 0u) {
+        send_status(can, node);
+        return;
     }
-    daran_property_t row = daran_property_row(prop);
+    daran_prop_t prop;
+    if (!daran_can_property_at(address, &prop)) {
+        return; /* no such address here (C24) */
+    }
     daran_value_t value;
     value.u64 = 0;
-    if (DARAN_PROPERTY_ACCESS(row) != DARAN_ACCESS_RW ||
-        !write_value(DARAN_PROPERTY_TYPE(row), daran_can_get_u16(data + 2), data + 4, &value) ||
-        daran_check_property_value(prop, value) != DARAN_OK) {
-        return; /* C25, C26, C27 */
+    if (read) {
+        if (daran_get(can->drive, prop, &value) == DARAN_OK) { /* else the HAL could not read it */
+            uint8_t reply[8];
+            daran_can_put_property(reply, address, daran_can_type_of(prop), value.u32);
+            send(can, DARAN_CAN_ID(node, DARAN_CAN_READ), reply);
+        }
+        return;
     }
-    (void)daran_commit_property(can->drive, prop, value);
+    daran_property_t row = daran_property_row(prop);
+    if (DARAN_PROPERTY_ACCESS(row) == DARAN_ACCESS_RW &&
+        write_value(DARAN_PROPERTY_TYPE(row), daran_can_get_u16(data + 2), data + 4, &value) &&
+        daran_check_property_value(prop, value) == DARAN_OK) { /* else C25, C26, C27 */
+        (void)daran_commit_property(can->drive, prop, value);
+    }
 }
 
 /* A command code of the protocol (2.1); every other one is ignored (C22). */
@@ -301,24 +300,12 @@ static void run_frame(daran_can_t *can, const daran_can_slot_t *frame, uint32_t 
     can->guard_tripped = 0;
     (void)daran_act(drive, DARAN_ACTION_FEED_WATCHDOG);
 
-    const uint8_t *data = frame->data;
-    bool broadcast = node == 0u;
-    switch (code) {
-    case DARAN_CAN_SYSTEM:
-        system_command(can, data, broadcast);
-        break;
-    case DARAN_CAN_PRESET:
-        preset(can, own.u32, data);
-        break;
-    case DARAN_CAN_READ:
-        read_property(can, own.u32, data);
-        break;
-    case DARAN_CAN_WRITE:
-        write_property(can, data);
-        break;
-    default:
-        direct_motion(can, own.u32, code, data);
-        break;
+    if (code == DARAN_CAN_SYSTEM) {
+        system_command(can, frame->data, node == 0u);
+    } else if (code >= DARAN_CAN_READ) {
+        property_frame(can, own.u32, code, frame->data);
+    } else {
+        value_frame(can, own.u32, code, frame->data);
     }
 }
 

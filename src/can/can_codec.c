@@ -1,7 +1,7 @@
 /* The CAN codec (can_codec.h), what a drive's front end needs of it: the
- * value frames' layouts as one table and their decoder, the mode and action
- * maps, exact scaling, sending a frame. The encoder a gateway's bridge
- * needs is can_encode.c, counted with the bridge. */
+ * value frames' layouts as one table and the one loop that decodes them,
+ * the reading of a mode or flag field, exact scaling. The encoder a
+ * gateway's bridge needs is can_encode.c, counted with the bridge. */
 #include "can_codec.h"
 
 #include "compiler.h"
@@ -13,7 +13,9 @@ DARAN_STATIC_ASSERT(DARAN_SHAPE_FILTERED == 0 && DARAN_SHAPE_TRAPEZOID == 1 &&
                         DARAN_SHAPE_PASSTHROUGH == 2 && DARAN_SHAPE_VELOCITY == 3 &&
                         DARAN_SHAPE_TORQUE == 4 &&
                         (int)DARAN_CAN_LAYOUT_TORQUE == (int)DARAN_SHAPE_TORQUE &&
-                        DARAN_CAN_TORQUE - DARAN_CAN_TRACK == DARAN_SHAPE_TORQUE,
+                        DARAN_CAN_TORQUE - DARAN_CAN_TRACK == DARAN_SHAPE_TORQUE &&
+                        DARAN_CAN_SUB_START_IMPEDANCE - DARAN_CAN_SUB_START_TRACK ==
+                            DARAN_SHAPE_IMPEDANCE,
                     can_codes_follow_the_shape_order);
 DARAN_STATIC_ASSERT(DARAN_ACTION_SAVE_CONFIG == 0 && DARAN_ACTION_ESTOP == 5 &&
                         DARAN_CAN_SUB_ESTOP - DARAN_CAN_SUB_SAVE == DARAN_ACTION_ESTOP,
@@ -30,38 +32,23 @@ const uint8_t daran_can_layouts[] = {
     [DARAN_CAN_LAYOUT_GAINS] = LAYOUT(DARAN_CAN_FIELD_SCALED, DARAN_CAN_FIELD_SCALED) | DARAN_CAN_NO_F32,
 };
 
-float daran_can_mode_of(uint32_t raw, bool torque)
+uint32_t daran_can_whole_of(uint32_t raw)
 {
-    if (raw >= 100u && raw % 100u == 0u) {
-        raw /= 100u;
-    }
-    if (raw == 1u) {
-        return 1.0f;
-    }
-    if (raw == 2u) {
-        return torque ? 6.0f : 2.0f;
-    }
-    return raw == 6u && torque ? 6.0f : 0.0f;
+    return raw >= 100u && raw % 100u == 0u ? raw / 100u : raw;
 }
 
 void daran_can_decode_values(daran_can_layout_t layout, const uint8_t *data, float *values)
 {
     unsigned fields = daran_can_layouts[layout];
-    if ((fields & DARAN_CAN_NO_F32) == 0u) {
-        values[0] = daran_can_get_f32(data);
+    values[0] = daran_can_get_f32(data); /* GAINS: its sub-code's bits, unused */
+    /* the two 16-bit fields' kinds, then a stop bit: one loop, not one
+     * decoder per field */
+    const uint8_t *at = data + 4;
+    for (unsigned kinds = (fields & 0xFu) | 0x10u; kinds != 1u; kinds >>= 2, at += 2) {
+        unsigned kind = kinds & 3u;
+        *++values = kind >= DARAN_CAN_FIELD_MODE ? (float)daran_can_whole_of(daran_can_get_u16(at))
+                                                 : daran_can_get_scaled(at);
     }
-    for (unsigned i = 1; i <= 2u; i++, fields >>= 2) {
-        const uint8_t *at = data + 2u + 2u * i;
-        unsigned kind = fields & 3u;
-        values[i] = kind >= DARAN_CAN_FIELD_MODE ? daran_can_mode_of(daran_can_get_u16(at), kind == DARAN_CAN_FIELD_TORQUE_MODE)
-                                       : daran_can_get_scaled(at);
-    }
-}
-
-bool daran_can_action_of(uint32_t subcode, daran_action_t *action)
-{
-    *action = (daran_action_t)(subcode - DARAN_CAN_SUB_SAVE);
-    return subcode >= DARAN_CAN_SUB_SAVE && subcode <= DARAN_CAN_SUB_ESTOP;
 }
 
 int daran_can_put_scaled(uint8_t *bytes, float value, int saturate)

@@ -45,9 +45,10 @@
 #define DARAN_CAN_TYPE_U32 3u
 #define DARAN_CAN_TYPE_S32 4u
 
-/* The motion codes 0x019..0x01D and the start sub-codes 0x10..0x14 follow
- * the motion shapes' order (t q p v c): shape = code - DARAN_CAN_TRACK =
- * sub-code - DARAN_CAN_SUB_START_TRACK (can_codec.c checks it). */
+/* The motion codes 0x019..0x01D and the start sub-codes 0x10..0x15 follow
+ * the motion shapes' order (t q p v c, then the impedance start's d):
+ * shape = code - DARAN_CAN_TRACK = sub-code - DARAN_CAN_SUB_START_TRACK
+ * (can_codec.c checks it). */
 
 /* The value frames' layouts: bytes 0..3 an f32, then two 16-bit fields at
  * bytes 4 and 6, each a scaled value (x 100, s16) or a mode. The first five
@@ -68,28 +69,35 @@ typedef enum daran_can_layout {
 #define DARAN_CAN_FIELD_SCALED 0u
 #define DARAN_CAN_FIELD_SCALED_SATURATED 1u /* encoded clamped: `t`'s velocity, which drives ignore (C3) */
 #define DARAN_CAN_FIELD_MODE 2u             /* a velocity mode, raw or x 100 (C1) */
-#define DARAN_CAN_FIELD_TORQUE_MODE 3u      /* a torque mode: the line's 2 is 6 on the bus (C40) */
+#define DARAN_CAN_FIELD_TORQUE_MODE 3u      /* a torque mode: the line's 2 is 6 on the bus (C40);
+                                               decoded as a mode field, both run the ramp */
 #define DARAN_CAN_NO_F32 0x10u /* bytes 0..3 are not a value (the impedance start's sub-code) */
 extern const uint8_t daran_can_layouts[];
 
 /* The three values of a frame of @p layout as the ASCII line would give
- * them: a mode field decoded raw or x 100 (C1; 0 for no mode the drive
- * knows); GAINS leaves values[0] alone. */
+ * them, a mode field as the whole number it carries (C1; the shape's
+ * check refuses a mode it has not); GAINS reads its sub-code into
+ * values[0]. */
 void daran_can_decode_values(daran_can_layout_t layout, const uint8_t *data, float *values);
 /* Encode three values (a mode as the ASCII line writes it) into @p data:
  * false when a scaled value leaves the s16 range, except `t`'s velocity,
  * which is saturated (C3); GAINS writes bytes 4..7 only. */
 bool daran_can_encode_values(daran_can_layout_t layout, const float *values, uint8_t *data);
 
-/* A mode field's value, raw or x 100 (C1), as the ASCII line writes the
- * mode: 1, 2 (velocity ramp) or 6 (torque ramp, which the vendor's C
- * libraries send as 2); 0 for none of them. */
-float daran_can_mode_of(uint32_t raw, bool torque);
+/* The whole number a mode or flag field carries, raw or x 100 (C1, C2):
+ * 2 and 200 are both 2. Which modes a shape takes is the shape's check
+ * (daran_shape_check()), as for a line: the torque ramp's 2 (the vendor's
+ * C libraries) and 6 run the same move. */
+uint32_t daran_can_whole_of(uint32_t raw);
 
 /* The system sub-code of a HAL action a frame can ask for (C36), and back:
  * false for a sub-code that is no action. */
 uint32_t daran_can_subcode_of(daran_action_t action);
-bool daran_can_action_of(uint32_t subcode, daran_action_t *action);
+static inline bool daran_can_action_of(uint32_t subcode, daran_action_t *action)
+{
+    *action = (daran_action_t)(subcode - DARAN_CAN_SUB_SAVE);
+    return subcode - DARAN_CAN_SUB_SAVE <= DARAN_CAN_SUB_ESTOP - DARAN_CAN_SUB_SAVE;
+}
 
 /* Little-endian fields of a frame's data. */
 static inline uint16_t daran_can_get_u16(const uint8_t *bytes)
