@@ -13,19 +13,11 @@
 bool daran_can_property_at(uint16_t address, daran_prop_t *prop)
 {
 #if DARAN_CAN_ROWS > 0
-    unsigned high = (unsigned)address >> 8;
-    /* the first run of that high byte: runs are in the order of theirs */
-    unsigned low_run = 0;
-    unsigned past = DARAN_CAN_RUNS;
-    while (low_run < past) {
-        unsigned middle = (low_run + past) / 2u;
-        if (can_run_high[middle] < high) {
-            low_run = middle + 1u;
-        } else {
-            past = middle;
+    /* the runs of the address's high byte, then their low bytes */
+    for (unsigned run = 0; run < DARAN_CAN_RUNS; run++) {
+        if (can_run_high[run] != (unsigned)address >> 8) {
+            continue;
         }
-    }
-    for (unsigned run = low_run; run < DARAN_CAN_RUNS && can_run_high[run] == high; run++) {
         unsigned first = can_run_first[run];
         for (unsigned p = first; p < first + can_run_count[run]; p++) {
             if (can_low[p] == (address & 0xFFu)) {
