@@ -2521,6 +2521,44 @@ static void add_rows(mock_row_fn fn, const void *rows, size_t count, size_t size
 }
 #define ADD_ROWS(fn, rows, prefix) add_rows((fn), (rows), sizeof(rows) / sizeof((rows)[0]), sizeof((rows)[0]), (prefix))
 
+/* ---- C1 for an ASCII preset: a start reads its p3 as a mode field x 100 ---- */
+
+/* p3 x 100 + 0.5, truncated, then raw or x 100 as a mode field reads: a
+ * sign (-0 too), 10 and past it are no mode; 0.015 x 100 rounds to 1.5 in
+ * float32, so it starts the ramp (mode 2), as the drive always read it. */
+static void test_c1_a_velocity_start_reads_an_ascii_preset_s_p3_x_100_and_a_sign_as_no_mode(void)
+{
+    SKIP_IF_NO_MULTI();
+    static const struct {
+        const char *p3;
+        daran_move_kind_t kind; /* REFUSED: ignored, the preset kept */
+    } cases[] = {
+        {"1", DARAN_MOVE_VELOCITY},       {"2", DARAN_MOVE_VELOCITY_RAMP},
+        {"0.01", DARAN_MOVE_VELOCITY},    {"0.02", DARAN_MOVE_VELOCITY_RAMP},
+        {"0.015", DARAN_MOVE_VELOCITY_RAMP}, {"0.014", DARAN_MOVE_VELOCITY},
+        {"-0", REFUSED},                  {"0", REFUSED},
+        {"-0.01", REFUSED},               {"-1", REFUSED},
+        {"6", REFUSED},                   {"3", REFUSED},
+        {"10", REFUSED},                  {"10.01", REFUSED},
+        {"1e30", REFUSED},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char line[48];
+        snprintf(line, sizeof line, "ms 1 2.5 1.5 %s", cases[i].p3);
+        start_drive(1);
+        mock_send_line(m, line);
+        TEST_ASSERT_EQUAL_STRING_MESSAGE("", m->out, line);
+        deliver(system_frame(1, 0x13u, 0, 0));
+        if (cases[i].kind == REFUSED) {
+            EXPECT_ONLY_FED();
+            continue;
+        }
+        const daran_move_t *move = EXPECT_MOVE();
+        TEST_ASSERT_EQUAL_INT_MESSAGE(cases[i].kind, move->kind, line);
+        TEST_ASSERT_EQUAL_FLOAT_MESSAGE(2.5f, move->vel_rpm, line);
+    }
+}
+
 int main(void)
 {
     static const uint32_t drive_ids[] = {1, 2, 3};
@@ -2598,6 +2636,7 @@ int main(void)
     RUN_TEST(test_unsent_counts_the_frames_the_port_refused);
     RUN_TEST(test_can_init_refuses_missing_pointers_and_port_functions);
     RUN_TEST(test_can_init_reads_the_protocol_and_nothing_else_changes);
+    RUN_TEST(test_c1_a_velocity_start_reads_an_ascii_preset_s_p3_x_100_and_a_sign_as_no_mode);
     return UNITY_END();
 }
 
