@@ -198,8 +198,8 @@ static bool write_value(daran_prop_type_t type, uint32_t code, const uint8_t *da
             magnitude = code == DARAN_CAN_TYPE_S16 ? (uint32_t)(int16_t)(uint16_t)magnitude
                                                    : magnitude & 0xFFFFu;
         }
-        /* S16 and S32, the even codes */
-        negative = (code & 1u) == 0u && (int32_t)magnitude < 0;
+        /* S16 and S32, the even codes: their sign bit */
+        negative = (code & 1u) == 0u && (magnitude >> 31) != 0u;
         if (negative) {
             magnitude = 0u - magnitude;
         }
