@@ -115,9 +115,10 @@
 
 /** 1 (default): the firmware update commands `ub uw uv ug uy ua us`
  * (daran_update.h, docs/update.md), answered by a drive bound to a
- * daran_update_t. 0 compiles them out: the build pays nothing for them. */
+ * daran_update_t. 0 (default) compiles them out: a build without them pays
+ * nothing for them but their four error phrases. */
 #ifndef DARAN_ENABLE_UPDATE
-#define DARAN_ENABLE_UPDATE 1
+#define DARAN_ENABLE_UPDATE 0
 #endif
 
 /** How long the bridge waits for each reply of a bridged query, in ms (C32). */

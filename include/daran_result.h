@@ -47,10 +47,10 @@ extern "C" {
  * | DARAN_ERR_ESTOP_ACTIVE | estop active |
  * | DARAN_ERR_MOTOR_FAULT | motor fault |
  * | DARAN_ERR_MOTOR_IDLE | motor idle |
- * | DARAN_ERR_UPDATE_OPEN | update open |
- * | DARAN_ERR_NOT_IDLE | axis not idle |
+ * | DARAN_ERR_UPDATE_OPEN | updating |
+ * | DARAN_ERR_NOT_IDLE | not idle |
  * | DARAN_ERR_NO_UPDATE | no update |
- * | DARAN_ERR_INVALID_IMAGE | invalid image |
+ * | DARAN_ERR_INVALID_IMAGE | bad image |
  * | DARAN_ERR_BAD_ARGUMENT | bad argument: a NULL pointer or a bad table given to the API |
  * | DARAN_ERR_BUILD_MISMATCH | build mismatch: daran_init(), daran_can_init() or daran_can_bridge_init() of a program built with another options header or property table |
  */
@@ -73,10 +73,10 @@ extern "C" {
     X(ERR_ESTOP_ACTIVE,          "estop active") \
     X(ERR_MOTOR_FAULT,           "motor fault") \
     X(ERR_MOTOR_IDLE,            "motor idle") \
-    X(ERR_UPDATE_OPEN,           "update open") /* motion, or another `ub`, while an update is open */ \
-    X(ERR_NOT_IDLE,              "axis not idle") /* an update step while the axis is not idle */ \
+    X(ERR_UPDATE_OPEN,           "updating") /* motion, or another `ub`, while an update is open */ \
+    X(ERR_NOT_IDLE,              "not idle") /* an update step while the axis is not idle */ \
     X(ERR_NO_UPDATE,             "no update") /* a step the update's state does not allow */ \
-    X(ERR_INVALID_IMAGE,         "invalid image") /* foreign hardware, too big, or `uv` found it bad */ \
+    X(ERR_INVALID_IMAGE,         "bad image") /* foreign hardware, too big, or `uv` found it bad */ \
     X(ERR_NO_REPLY,              "no reply") /* a bridged query's drive did not answer (C32) */ \
     X(ERR_BUS_ERROR,             "bus error") /* the CAN port could not send (C33) */ \
     X(ERR_NOT_BRIDGED,           "not bridged") /* a line for another id with no CAN form (C35) */ \

@@ -19,8 +19,8 @@ static daran_result_t run_framed_line(daran_drive_t *drive);
 daran_result_t daran_init_checked(daran_drive_t *drive, uint32_t build_check,
                                   const daran_hal_t *hal, void *ctx)
 {
-    if (drive == NULL || hal == NULL || hal->write == NULL || hal->get == NULL ||
-        hal->set == NULL || hal->move == NULL || hal->action == NULL) {
+    if (drive == NULL || hal == NULL || hal->get == NULL || hal->set == NULL ||
+        hal->move == NULL || hal->action == NULL || hal->write == NULL) {
         return DARAN_ERR_BAD_ARGUMENT;
     }
     if (build_check != DARAN_BUILD_CHECK(daran_drive_t)) {

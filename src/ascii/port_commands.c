@@ -25,9 +25,8 @@ static size_t word_length(const char *word)
     return word[len] == '\0' ? len : 0u;
 }
 
-/* The command of that word among commands[0..count), or NULL. */
-static const daran_port_command_t *find_in(const daran_port_command_t *commands, size_t count,
-                                           const daran_field_t *word)
+const daran_port_command_t *daran_port_command_in(const daran_port_command_t *commands,
+                                                  size_t count, const daran_field_t *word)
 {
     for (size_t i = 0; i < count; i++) {
         /* command words are case-insensitive (spec 1); the table's are lower case */
@@ -78,19 +77,13 @@ daran_result_t daran_set_port_commands(daran_drive_t *drive, const daran_port_co
         if (word.len == 0u || c->handler == NULL || c->help == NULL ||
             c->min_values > c->max_values || c->max_values > DARAN_FIELDS_MAX - 3u ||
             daran_find_command(&word) != NULL || compiled_out_vendor_word(&word) ||
-            find_in(commands, i, &word) != NULL) {
+            daran_port_command_in(commands, i, &word) != NULL) {
             return DARAN_ERR_BAD_ARGUMENT;
         }
     }
     drive->port_commands = count != 0u ? commands : NULL;
     drive->port_command_count = (uint8_t)count;
     return DARAN_OK;
-}
-
-const daran_port_command_t *daran_find_port_command(const daran_drive_t *drive,
-                                                    const daran_field_t *word)
-{
-    return find_in(drive->port_commands, drive->port_command_count, word);
 }
 
 size_t daran_args_count(const daran_args_t *args)

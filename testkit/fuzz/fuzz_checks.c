@@ -11,7 +11,7 @@ static const char *const error_phrases[] = {
     "value out of range", "invalid mode", "invalid property", "read only property",
     "invalid checksum", "checksum mismatch", "line too long", "invalid character",
     "no preset", "trajectory infeasible", "estop active", "motor fault", "motor idle",
-    "update open", "axis not idle", "no update", "invalid image", /* the update's (docs/update.md) */
+    "updating", "not idle", "no update", "bad image", /* the update's (docs/update.md) */
     "no reply", "bus error", "not bridged", /* a gateway's (docs/can.md) */
 };
 

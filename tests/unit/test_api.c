@@ -110,7 +110,7 @@ static void test_result_phrases_match_the_protocol(void)
         "value out of range", "invalid mode", "invalid property", "read only property",
         "invalid checksum", "checksum mismatch", "line too long", "invalid character",
         "no preset", "trajectory infeasible", "estop active", "motor fault", "motor idle",
-        "update open", "axis not idle", "no update", "invalid image",
+        "updating", "not idle", "no update", "bad image",
         "no reply", "bus error", "not bridged",
     };
     TEST_ASSERT_EQUAL_INT64(DARAN_ERR_BAD_ARGUMENT, sizeof want / sizeof want[0]);

@@ -342,7 +342,7 @@ static const char *const phrases[] = {
     "value out of range", "invalid mode", "invalid property", "read only property",
     "invalid checksum", "checksum mismatch", "line too long", "invalid character", "no preset",
     "trajectory infeasible", "estop active", "motor fault", "motor idle",
-    "update open", "axis not idle", "no update", "invalid image",
+    "updating", "not idle", "no update", "bad image",
     "no reply", "bus error", "not bridged",
 };
 
