@@ -77,9 +77,9 @@ typedef struct daran_can {
     uint32_t kept_ms;           /* when the guard and the heartbeat were last looked at */
     uint32_t unsent;            /* replies and status frames the port could not send */
     uint8_t enabled;            /* can.config.protocol was 1 at daran_can_init() */
-    uint8_t guard_armed;        /* a frame for this drive came since boot (C16) */
-    uint8_t guard_tripped;      /* the guard stopped the drive; a frame re-arms it */
-    uint8_t reserved;
+    uint8_t guard_armed;        /* a frame for this drive came since boot or since the guard
+                                   stopped the drive (C16) */
+    uint8_t reserved[2];
     daran_can_slot_t slots[DARAN_CAN_RX_FRAMES];
     /** @endcond */
 } daran_can_t;

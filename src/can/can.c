@@ -297,7 +297,6 @@ static void run_frame(daran_can_t *can, const daran_can_slot_t *frame, uint32_t 
      * axis watchdog, whatever its content (C18). */
     can->last_frame_ms = now;
     can->guard_armed = 1;
-    can->guard_tripped = 0;
     (void)daran_act(drive, DARAN_ACTION_FEED_WATCHDOG);
 
     if (code == DARAN_CAN_SYSTEM) {
@@ -345,10 +344,10 @@ static void keep_time(daran_can_t *can, uint32_t now)
 {
     daran_drive_t *drive = can->drive;
     daran_value_t limit;
-    if (can->guard_armed && !can->guard_tripped &&
+    if (can->guard_armed &&
         daran_get(drive, DARAN_PROP_CAN_TIMEOUT_MS, &limit) == DARAN_OK && limit.u32 != 0u &&
         now - can->last_frame_ms >= limit.u32) {
-        can->guard_tripped = 1;
+        can->guard_armed = 0; /* tripped: the next frame for the drive arms it again */
         (void)daran_act(drive, DARAN_ACTION_NODE_GUARD);
     }
     daran_value_t period;
