@@ -297,6 +297,7 @@ const daran_hal_t daran_recorder_hal = {recorder_get,      recorder_set,       r
 
 /* ---- the inner port's own commands ---- */
 
+#if DARAN_ENABLE_PORT_COMMANDS
 /* A relay's handler: the drive's context is the recorder, the port's
  * handler wants the port's own. */
 static daran_result_t relay_command(daran_drive_t *drive, const daran_args_t *args, void *ctx)
@@ -312,6 +313,7 @@ static daran_result_t relay_command(daran_drive_t *drive, const daran_args_t *ar
     }
     return DARAN_ERR_UNKNOWN_COMMAND; /* the drive found a relay: cannot happen */
 }
+#endif
 
 daran_result_t daran_recorder_attach_commands(daran_recorder_t *rec, daran_drive_t *drive,
                                               const daran_port_command_t *commands, size_t count)
@@ -322,10 +324,12 @@ daran_result_t daran_recorder_attach_commands(daran_recorder_t *rec, daran_drive
     }
     for (size_t i = 0; i < count; i++) {
         rec->relays[i] = commands[i];
+#if DARAN_ENABLE_PORT_COMMANDS
         /* a NULL handler stays NULL, so the drive refuses the table as it would the port's */
         if (commands[i].handler != NULL) {
             rec->relays[i].handler = relay_command;
         }
+#endif
     }
     daran_result_t result = daran_set_port_commands(drive, rec->relays, count);
     if (result == DARAN_OK) {

@@ -47,6 +47,7 @@ if [ $# -eq 0 ]; then
          small-ring "-DDARAN_RX_RING_SIZE=16 -DDARAN_LINE_MAX=200" \
          big-ring "-DDARAN_RX_RING_SIZE=1024 -DDARAN_LINE_MAX=96" \
          no-help "-DDARAN_ENABLE_HELP=0" \
+         update "-DDARAN_ENABLE_UPDATE=1" \
          no-multi "-DDARAN_ENABLE_MULTI_MOTOR=0" \
          no-can "-DDARAN_ENABLE_CAN=0" \
          no-bridge "-DDARAN_ENABLE_CAN_BRIDGE=0" \
