@@ -142,6 +142,7 @@
  * '*' (the checksum's mark) from '!' on; 5 characters carry 4 bytes, most
  * significant first, and a last group of n < 5 characters n - 1 bytes. */
 #define DARAN_UPDATE_DATA_FIRST '!'
+/** The DATA alphabet's last character (see DARAN_UPDATE_DATA_FIRST). */
 #define DARAN_UPDATE_DATA_LAST 'v'
 
 #ifndef DARAN_EXTRA_COMMANDS

@@ -26,7 +26,7 @@ extern "C" {
  * little-endian; the payload follows it. */
 #define DARAN_UPDATE_HEADER_SIZE 128u
 #define DARAN_UPDATE_MAGIC 0x554e5244u /**< "DRNU" */
-#define DARAN_UPDATE_HEADER_VERSION 1u
+#define DARAN_UPDATE_HEADER_VERSION 1u /**< the header's layout below */
 /** Byte offsets of the header's fields. */
 #define DARAN_UPDATE_AT_MAGIC 0u          /**< u32 DARAN_UPDATE_MAGIC */
 #define DARAN_UPDATE_AT_HEADER_VERSION 4u /**< u16 DARAN_UPDATE_HEADER_VERSION */
@@ -38,7 +38,7 @@ extern "C" {
 #define DARAN_UPDATE_AT_PAYLOAD_CRC 24u   /**< u32 CRC-32 of the payload */
 #define DARAN_UPDATE_AT_SHA256 32u        /**< 32 bytes: SHA-256 of the payload */
 #define DARAN_UPDATE_AT_SIGNATURE 64u     /**< 64 bytes: Ed25519 over the SHA-256, when signed */
-#define DARAN_UPDATE_FLAG_SIGNED 0x0001u
+#define DARAN_UPDATE_FLAG_SIGNED 0x0001u /**< the header carries a signature */
 
 /** The flash regions the port gives: the inactive slot (images are written
  * here from offset 0) and the update journal (one page, apart from both
@@ -58,10 +58,10 @@ typedef enum daran_update_slot_state {
 
 /** Both slots and which one runs. */
 typedef struct daran_update_slots {
-    uint32_t version[2];
-    uint8_t state[2];   /**< daran_update_slot_state_t */
-    uint8_t running;    /**< 0 or 1 */
-    uint8_t reserved;
+    uint32_t version[2]; /**< each slot's image version (0: none) */
+    uint8_t state[2];    /**< daran_update_slot_state_t */
+    uint8_t running;     /**< 0 or 1 */
+    uint8_t reserved;    /**< 0 */
 } daran_update_slots_t;
 
 /** What the port gives the update module (daran_hal_t.update); every
@@ -77,6 +77,7 @@ typedef struct daran_update_port {
     /** Program @p len bytes at @p offset (bits only go from 1 to 0). */
     daran_result_t (*program)(void *ctx, daran_update_region_t region, uint32_t offset,
                               const uint8_t *data, size_t len);
+    /** Read @p len bytes at @p offset. */
     daran_result_t (*read)(void *ctx, daran_update_region_t region, uint32_t offset,
                            uint8_t *data, size_t len);
     /** Mark the inactive slot to boot once as a test, then reset the drive
