@@ -285,9 +285,9 @@ static void test_port_commands_follow_enable_port_commands(void)
     static const daran_port_command_t table[] = {{"ping", 0, 0, DARAN_PORT_COMMAND_QUERY, NULL, ""}};
 #endif
     reset();
-    check(daran_set_port_commands(&drive, table, 0, NULL) == DARAN_OK,
+    check(daran_set_port_commands(&drive, table, 0) == DARAN_OK,
           "an_empty_port_command_table_is_always_taken", "refused");
-    daran_result_t result = daran_set_port_commands(&drive, table, 1, NULL);
+    daran_result_t result = daran_set_port_commands(&drive, table, 1);
 #if DARAN_ENABLE_PORT_COMMANDS
     check(result == DARAN_OK, "port_command_table_is_taken_with_port_commands", "refused");
     expect_reply("port_command_runs_with_port_commands", "ping 1", "pong" LE);
@@ -325,8 +325,9 @@ static void test_mq_plans_s_curves_with_enable_s_curve(void)
     hal = daran_stub_hal;
     hal.get = recording_get;
     hal.move = recording_move;
+    hal.write = on_reply;
     daran_stub_init(&stub, OWN_ID);
-    if (daran_init(&drive, &hal, &stub, on_reply, NULL) != DARAN_OK) {
+    if (daran_init(&drive, &hal, &stub) != DARAN_OK) {
         check(0, "mq_plans_s_curves_with_enable_s_curve", "daran_init failed");
         return;
     }
