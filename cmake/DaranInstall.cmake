@@ -14,7 +14,7 @@ endif()
 
 set(_daran_public_headers)
 foreach(_h IN ITEMS daran_ascii.h daran_build.h daran_can.h daran_client.h daran_config.h daran_drive.h daran_hal.h daran_port.h
-                    daran_properties.h daran_protocol.h daran_result.h daran_version.h)
+                    daran_properties.h daran_protocol.h daran_result.h daran_update.h daran_version.h)
   list(APPEND _daran_public_headers "${PROJECT_SOURCE_DIR}/include/${_h}")
 endforeach()
 

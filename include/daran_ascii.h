@@ -12,6 +12,7 @@
 #include "daran_properties.h"
 #include "daran_protocol.h"
 #include "daran_result.h"
+#include "daran_update.h"
 #include "daran_version.h"
 
 #endif /* DARAN_ASCII_H */
