@@ -11,6 +11,7 @@ from typing import NamedTuple
 from ._client import ffi, lib
 from ._table import COMMANDS, PROPERTIES, Property, Result
 from .errors import DriveRefused, LinkError, NoReply, raise_for
+from .values import State
 
 SCOPE = {None: lib.DARAN_CLIENT_SCOPE_AUTO, False: lib.DARAN_CLIENT_SCOPE_AXIS,
          True: lib.DARAN_CLIENT_SCOPE_SYSTEM}
@@ -370,7 +371,6 @@ class LineLink:
 
     def state(self, drive_id):
         """`f` and the reads of torque, trajectory_done and error in one write."""
-        from .drive import State
         batch = self._state_batches.get(drive_id)
         if batch is None:
             batch = self._state_batches[drive_id] = [("F", drive_id, None, None, 2, _F2)] + [

@@ -11,7 +11,7 @@ import time
 
 from ._client import ffi, lib
 from ._table import BY_NAME, PROPERTIES, Result, query_properties
-from .drive import State
+from .values import State
 from .errors import DaranError, LinkError, NoReply
 from .link import LinkAPI
 

@@ -1,33 +1,12 @@
 """A drive on a link: a method for every command, its properties as an
 attribute tree, its state and its errors."""
-from typing import NamedTuple
-
 from ._client import lib
 from ._link import lookup
 from ._table import ERROR_REGISTERS, PROPERTIES, Property, error_bit_name
 from .props import PropertyTree
+from .values import Errors, State
 
 
-class State(NamedTuple):
-    """What `state()` reads: the output shaft's position (deg), velocity (r/min)
-    and torque estimate (Nm), whether the trajectory is done, and the error:
-    `axis0.error` on a line, the status frame's E bit (1 when axis0.error is
-    not 0) on CAN."""
-    position: float
-    velocity: float
-    torque: float
-    done: bool
-    error: int
-
-
-class Errors(NamedTuple):
-    """`e`'s seven registers (axis, motor, encoder, controller,
-    fet_thermistor, motor_thermistor, can) and the vendor's names of the bits set."""
-    registers: dict
-    names: dict
-
-    def __bool__(self):
-        return any(self.registers.values())
 
 
 #: the bits of `axis0.telemetry.fields`, in order (protocol.md 11.2)

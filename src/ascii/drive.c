@@ -10,6 +10,7 @@
 #include "hal.h"
 #include "handlers.h"
 #include "line.h"
+#include "port_commands.h"
 #include "property.h"
 #include "reply.h"
 #include "rx_ring.h"

@@ -4,6 +4,7 @@
  * daran_set_port_commands() that takes no table; the lookup that finds
  * nothing is inline in command.h, so the dispatcher's port branch goes. */
 #include "command.h"
+#include "port_commands.h"
 #include "handlers.h"
 #include "number.h"
 #include "reply.h"
