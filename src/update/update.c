@@ -89,6 +89,13 @@ static bool slot_fits(const daran_update_port_t *port, uint32_t size)
            (size - 1u) / port->page_size < journal_pages(port);
 }
 
+/* Both slots as the port's boot control says; what it leaves unset reads 0. */
+static void read_slots(const daran_update_t *update, daran_update_slots_t *slots)
+{
+    memset(slots, 0, sizeof *slots);
+    port_of(update)->slots(ctx_of(update), slots);
+}
+
 /* ---- reading the journal at init ---- */
 
 static bool read_record(const daran_update_t *update, record_t *record)
@@ -111,8 +118,7 @@ static bool read_record(const daran_update_t *update, record_t *record)
 static bool update_is_over(const daran_update_t *update, const record_t *record)
 {
     daran_update_slots_t slots;
-    memset(&slots, 0, sizeof slots);
-    port_of(update)->slots(ctx_of(update), &slots);
+    read_slots(update, &slots);
     unsigned running = slots.running & 1u;
     return (slots.version[running] == record->version &&
             slots.state[running] != DARAN_SLOT_EMPTY) ||
@@ -459,8 +465,7 @@ static daran_result_t commit(daran_update_t *update)
 static daran_result_t confirm(daran_update_t *update)
 {
     daran_update_slots_t slots;
-    memset(&slots, 0, sizeof slots);
-    port_of(update)->slots(ctx_of(update), &slots);
+    read_slots(update, &slots);
     if (slots.state[slots.running & 1u] != DARAN_SLOT_TESTING) {
         return DARAN_ERR_NO_UPDATE;
     }
@@ -484,8 +489,7 @@ static daran_result_t status(daran_update_t *update, const daran_request_t *requ
         return DARAN_OK;
     }
     daran_update_slots_t slots;
-    memset(&slots, 0, sizeof slots);
-    port_of(update)->slots(ctx_of(update), &slots);
+    read_slots(update, &slots);
     const uint32_t values[] = {update->state,   update->next,     update->size,
                                slots.running,   slots.version[0], slots.state[0],
                                slots.version[1], slots.state[1]};

@@ -95,8 +95,9 @@ static daran_result_t boot_commit(void *ctx)
 {
     update_double_t *d = ctx;
     unsigned other = d->running ^ 1u;
-    d->version[other] = 0;
-    memcpy(&d->version[other], &d->slot[other][DARAN_UPDATE_AT_VERSION], 4u); /* little-endian host */
+    const uint8_t *version = &d->slot[other][DARAN_UPDATE_AT_VERSION]; /* little-endian */
+    d->version[other] = (uint32_t)version[0] | (uint32_t)version[1] << 8 |
+                        (uint32_t)version[2] << 16 | (uint32_t)version[3] << 24;
     d->state[other] = DARAN_SLOT_TESTING;
     d->reset_pending = true;
     return DARAN_OK;
